@@ -1,0 +1,165 @@
+#include "cli/RenderCommand.h"
+
+#include "document/CameraFile.h"
+#include "imageio/ImageFile.h"
+#include "document/LightsFile.h"
+#include "document/SceneLoader.h"
+#include "cli/StatsJson.h"
+#include "context/HeadlessContext.h"
+#include "core/Renderer.h"
+
+#include <QCommandLineParser>
+#include <QJsonArray>
+#include <QCoreApplication>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+#include <cstdio>
+
+namespace vct::cli {
+
+namespace {
+
+int fail(int code, const QString& message)
+{
+    std::fprintf(stderr, "vct-render: %s\n", qPrintable(message));
+    return code;
+}
+
+QString settingsHelp()
+{
+    QString text = QStringLiteral("\nSettings for --set key=value (defaults shown):\n");
+    for (const auto& row : render::RenderSettings().describe())
+        text += QStringLiteral("  %1=%2  %3\n").arg(QString::fromStdString(row[0]), QString::fromStdString(row[1]),
+            QString::fromStdString(row[2]));
+    return text;
+}
+
+} // namespace
+
+int RenderCommand::run(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("vct-render"));
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Renders a scene with voxel cone tracing, headless.\n"
+        "SCENE is builtin:NAME (cornell, cornell_point, atrium, bunny, default) or a model file Assimp reads\n"
+        "(OBJ+MTL, glTF/GLB, PLY, FBX, ...); NAME.lights.json and NAME.camera.json beside a model are read too.\n"
+        "Units: point lights W/sr, directional lights W/m^2, emission and output radiance W/(m^2 sr).\n"
+        ".png output is tone-mapped sRGB (exposure + filmic curve); .pfm/.exr hold linear radiance.")
+        + settingsHelp());
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("builtin:NAME or a model file"));
+    const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (shared/reference format)."), QStringLiteral("cam.json"));
+    const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON added to the scene's lights."), QStringLiteral("lights.json"));
+    const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
+    const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Image height in pixels (default: camera file or 360)."), QStringLiteral("H"));
+    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Output image: .png, .pfm or .exr (default out.png)."), QStringLiteral("FILE"), QStringLiteral("out.png"));
+    const QCommandLineOption voxelOption(QStringLiteral("voxel-res"), QStringLiteral("Voxel grid resolution, power of two 8..512 (same as --set voxel_res=N)."), QStringLiteral("N"));
+    const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
+    const QCommandLineOption statsOption(QStringLiteral("stats"), QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."), QStringLiteral("stats.json"));
+    const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames; stats give the median of frames after the first (which compiles shaders). Default 1."), QStringLiteral("N"), QStringLiteral("1"));
+    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
+        statsOption, framesOption, glOption});
+    parser.process(app);
+
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1)
+        return fail(1, QStringLiteral("expected exactly one SCENE argument (see --help)"));
+    const QString sceneSpec = positional.front();
+
+    render::RenderSettings settings;
+    QStringList assignments = parser.values(setOption);
+    if (parser.isSet(voxelOption))
+        assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));
+    for (const QString& assignment : assignments) {
+        const int eq = assignment.indexOf(QLatin1Char('='));
+        if (eq <= 0)
+            return fail(1, QStringLiteral("--set expects key=value, got '%1'").arg(assignment));
+        const std::string problem = settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
+        if (!problem.empty())
+            return fail(1, QString::fromStdString(problem));
+    }
+    bool framesOk = false;
+    const int frames = parser.value(framesOption).toInt(&framesOk);
+    if (!framesOk || frames < 1 || frames > 1000)
+        return fail(1, QStringLiteral("--frames must be 1..1000"));
+
+    render::Scene scene;
+    QString error;
+    doc::SceneLoadInfo info;
+    if (!doc::SceneLoader::load(sceneSpec, scene, &error, &info))
+        return fail(1, error);
+    if (parser.isSet(lightsOption) && !doc::LightsFile::read(parser.value(lightsOption), scene, &error))
+        return fail(1, error);
+    int width = info.width > 0 ? info.width : 640;
+    int height = info.height > 0 ? info.height : 360;
+    render::Camera camera = scene.camera;
+    if (parser.isSet(cameraOption)) {
+        doc::CameraSetup setup;
+        if (!doc::CameraFile::read(parser.value(cameraOption), setup, &error))
+            return fail(1, error);
+        camera = setup.camera;
+        width = setup.width;
+        height = setup.height;
+    }
+    for (const auto& [option, target] : {std::pair{&widthOption, &width}, std::pair{&heightOption, &height}})
+        if (parser.isSet(*option)) {
+            bool ok = false;
+            *target = parser.value(*option).toInt(&ok);
+            if (!ok || *target < 1 || *target > 16384)
+                return fail(1, QStringLiteral("--%1 must be 1..16384").arg(option->names().front()));
+        }
+    const QString outPath = parser.value(outOption);
+    if (io::ImageFile::formatFor(outPath.toStdString()) == io::ImageFile::Format::Unknown)
+        return fail(1, QStringLiteral("cannot tell the image format of '%1' (use .png, .pfm or .exr)").arg(outPath));
+
+    std::string contextError;
+    auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
+    if (!context)
+        return fail(2, QString::fromStdString(contextError));
+
+    std::vector<render::FrameStats> timed;
+    render::RadianceImage image;
+    try {
+        render::Renderer renderer(context->procAddressFunction());
+        renderer.setSettings(settings);
+        renderer.setScene(scene);
+        for (int i = 0; i < frames; ++i) {
+            if (i > 0)
+                renderer.invalidate();
+            render::FrameStats stats = renderer.renderFrame(camera, width, height);
+            if (frames == 1 || i > 0)
+                timed.push_back(stats);
+        }
+        image = renderer.readFrame();
+        for (const std::string& message : renderer.takeGlErrors())
+            std::fprintf(stderr, "vct-render: warning: %s\n", message.c_str());
+    } catch (const std::exception& e) {
+        return fail(3, QString::fromUtf8(e.what()));
+    }
+
+    std::string writeError;
+    if (!io::ImageFile::write(outPath.toStdString(), image, settings.exposure, &writeError))
+        return fail(3, QString::fromStdString(writeError));
+    std::printf("wrote %s (%dx%d) with %s\n", qPrintable(outPath), width, height, context->description().c_str());
+
+    if (parser.isSet(statsOption)) {
+        const QJsonObject json = statsToJson(timed, settings, sceneSpec, QString::fromStdString(context->description()));
+        QSaveFile file(parser.value(statsOption));
+        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0 || !file.commit())
+            return fail(3, QStringLiteral("cannot write stats to '%1': %2").arg(parser.value(statsOption), file.errorString()));
+        for (const QJsonValue& pass : json["passes"].toArray()) {
+            const QJsonObject p = pass.toObject();
+            std::printf("  %-13s %-7s %8.2f ms  (%s)\n", qPrintable(p["name"].toString()), qPrintable(p["action"].toString()),
+                p["gpu_ms"].toDouble(), qPrintable(p["reason"].toString()));
+        }
+        std::printf("  total %.2f ms GPU, voxel memory %.1f MiB\n", json["total_gpu_ms"].toDouble(),
+            json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0));
+    }
+    return 0;
+}
+
+} // namespace vct::cli

@@ -1,0 +1,62 @@
+#include "cli/StatsJson.h"
+
+#include <QJsonArray>
+
+#include <algorithm>
+
+namespace vct::cli {
+
+namespace {
+
+double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+} // namespace
+
+QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const render::RenderSettings& settings,
+    const QString& scene, const QString& glDescription)
+{
+    QJsonObject root;
+    root["scene"] = scene;
+    root["gl"] = glDescription;
+    root["frames_timed"] = int(frames.size());
+    if (frames.empty())
+        return root;
+    const render::FrameStats& last = frames.back();
+    root["width"] = last.width;
+    root["height"] = last.height;
+    root["voxel_resolution"] = last.voxelResolution;
+    root["voxel_size_m"] = double(last.voxelSize);
+    root["voxel_memory_bytes"] = double(last.voxelBytes);
+    QJsonArray passes;
+    std::vector<double> totals;
+    for (const render::FrameStats& f : frames)
+        totals.push_back(f.totalGpuMs);
+    for (std::size_t i = 0; i < last.passes.size(); ++i) {
+        std::vector<double> ms;
+        for (const render::FrameStats& f : frames)
+            if (i < f.passes.size() && f.passes[i].action == "run")
+                ms.push_back(f.passes[i].gpuMs);
+        QJsonObject pass;
+        pass["name"] = QString::fromStdString(last.passes[i].name);
+        pass["action"] = QString::fromStdString(last.passes[i].action);
+        pass["reason"] = QString::fromStdString(last.passes[i].reason);
+        pass["gpu_ms"] = median(ms);
+        passes.append(pass);
+    }
+    root["passes"] = passes;
+    root["total_gpu_ms"] = median(totals);
+    QJsonObject values;
+    for (const auto& row : settings.describe())
+        values[QString::fromStdString(row[0])] = QString::fromStdString(row[1]);
+    root["settings"] = values;
+    return root;
+}
+
+} // namespace vct::cli

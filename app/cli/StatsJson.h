@@ -1,0 +1,17 @@
+#pragma once
+
+#include "core/FrameStats.h"
+#include "core/RenderSettings.h"
+
+#include <QJsonObject>
+#include <QString>
+
+#include <vector>
+
+namespace vct::cli {
+
+/** The `--stats` document: per-pass milliseconds (median over the timed frames), voxel memory, settings. */
+QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const render::RenderSettings& settings,
+    const QString& scene, const QString& glDescription);
+
+} // namespace vct::cli

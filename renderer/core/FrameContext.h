@@ -1,0 +1,42 @@
+#pragma once
+
+#include "core/ConeSet.h"
+#include "core/FrameResources.h"
+#include "core/GpuScene.h"
+#include "core/RenderSettings.h"
+#include "core/ShaderLibrary.h"
+#include "scene/Camera.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+
+namespace vct::render {
+
+/**
+ * Counters that grow when something a pass depends on changes. A pass remembers the values it last ran
+ * with, so "can I reuse my output?" is an exact comparison rather than a guess.
+ */
+struct ChangeVersions {
+    std::uint64_t staticGeometry = 1; ///< Static meshes, their materials, or the grid.
+    std::uint64_t dynamicGeometry = 1;
+    std::uint64_t lights = 1;
+    std::uint64_t shading = 1; ///< Settings that change injection (emission toggle).
+};
+
+/** Everything a pass may read or write during one frame. */
+struct FrameContext {
+    const ShaderLibrary& shaders;
+    GpuScene& scene;
+    const RenderSettings& settings;
+    const ChangeVersions& versions;
+    VoxelVolume& voxels;
+    ShadowMaps& shadows;
+    ScreenTargets& screen;
+    const ConeSet& diffuseCones;
+    Camera camera;
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+};
+
+} // namespace vct::render

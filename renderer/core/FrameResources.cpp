@@ -1,0 +1,13 @@
+#include "core/FrameResources.h"
+
+namespace vct::render {
+
+std::size_t VoxelVolume::byteSize() const
+{
+    std::size_t total = 0;
+    for (const gl::Texture* t : {&accumulators, &staticAlbedo, &staticNormal, &staticEmission, &albedo, &normal, &emission, &radiance})
+        total += *t ? t->byteSize() : 0;
+    return total;
+}
+
+} // namespace vct::render

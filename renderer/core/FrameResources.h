@@ -1,0 +1,59 @@
+#pragma once
+
+#include "core/VoxelGridFrame.h"
+#include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace vct::render {
+
+/** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
+struct VoxelVolume {
+    VoxelGridFrame frame;
+    /// r32f atlas of sums written with imageAtomicAdd (albedo rgb, count, normal xyz, emission rgb), 2x2x3 grids.
+    gl::Texture accumulators;
+    gl::Texture staticAlbedo, staticNormal, staticEmission; ///< Static meshes only, kept while dynamic ones move.
+    gl::Texture albedo;   ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
+    gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
+    gl::Texture emission; ///< rgba16f: averaged emitted radiance.
+    gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
+    std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
+    std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
+
+    std::size_t byteSize() const;
+};
+
+/** Shadow maps of all lights: point lights as cube layers of linear distance, directional lights as 2D layers. */
+struct ShadowMaps {
+    gl::Texture pointDepth;       ///< depth32f cube map array, value = distance / far.
+    gl::Texture directionalDepth; ///< depth32f 2D array.
+    gl::Framebuffer framebuffer;
+    int size = 0;
+    float pointFar = 1.0f; ///< metres: the distance that maps to 1 in pointDepth
+    std::vector<glm::mat4> directionalMatrices; ///< world to light clip space, one per directional light
+    std::uint64_t version = 0; ///< Grows each time the maps are redrawn.
+};
+
+/** Per-pixel buffers of the current output size. */
+struct ScreenTargets {
+    int width = 0, height = 0;
+    gl::Texture position;  ///< rgba32f: world position, a = 1 where geometry was hit.
+    gl::Texture normal;    ///< rgba16f: world shading normal, a = Phong exponent.
+    gl::Texture albedo;    ///< rgba16f: linear albedo.
+    gl::Texture specular;  ///< rgba16f: specular reflectance.
+    gl::Texture emission;  ///< rgba16f: emitted radiance toward the camera (front faces only).
+    gl::Texture depth;
+    gl::Framebuffer gbuffer;
+    gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
+    gl::Texture indirectSpecular; ///< rgba16f: radiance along the specular cone.
+    gl::Framebuffer indirectTarget;
+    gl::Texture final;            ///< rgba32f: linear radiance of the frame.
+    gl::Framebuffer finalTarget;
+};
+
+} // namespace vct::render

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace vct::render {
+
+/** Which meshes a draw covers: the voxelizer draws static and dynamic meshes into separate layers. */
+enum class MeshFilter { All, Static, Dynamic };
+
+/** The scene's meshes, materials and textures on the GPU. Created with a current context. */
+class GpuScene {
+public:
+    explicit GpuScene(const Scene& scene);
+
+    /**
+     * Draws every mesh passing the filter with `program` bound, setting the per-mesh uniforms the shaders in
+     * shaders/common/Material.glsl read (uModel, uNormalMatrix, material fields) and binding the albedo texture
+     * at unit `albedoUnit`.
+     */
+    void draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit) const;
+    void setTransform(std::size_t mesh, const glm::mat4& transform);
+    void setMaterial(std::size_t index, const Material& material);
+    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
+    const Scene& scene() const { return m_scene; }
+    std::size_t meshCount() const { return m_meshes.size(); }
+    bool hasDynamicMeshes() const;
+
+private:
+    struct GpuMesh {
+        gl::Buffer vertices;
+        gl::Buffer indices;
+        gl::VertexArray vao;
+        GLsizei indexCount = 0;
+    };
+    Scene m_scene; // a copy: transforms and materials change through setters, meshes never
+    std::vector<GpuMesh> m_meshes;
+    std::vector<gl::Texture> m_textures;
+    gl::Texture m_whiteTexture;
+};
+
+} // namespace vct::render

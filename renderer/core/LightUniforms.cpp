@@ -1,0 +1,42 @@
+#include "core/LightUniforms.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace vct::render {
+
+void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows)
+{
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    std::vector<glm::vec4> positions, intensities, directions, irradiances;
+    for (int i = 0; i < points; ++i) {
+        const PointLight& light = scene.pointLights[std::size_t(i)];
+        positions.emplace_back(light.position, light.castsShadows && shadows.pointDepth ? 1.0f : 0.0f);
+        intensities.emplace_back(light.intensity, 0.0f);
+    }
+    for (int i = 0; i < directionals; ++i) {
+        const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
+        const bool shadowed = light.castsShadows && shadows.directionalDepth && std::size_t(i) < shadows.directionalMatrices.size();
+        directions.emplace_back(light.direction, shadowed ? 1.0f : 0.0f);
+        irradiances.emplace_back(light.irradiance, 0.0f);
+        if (shadowed)
+            glProgramUniformMatrix4fv(program.id(), program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()),
+                1, GL_FALSE, &shadows.directionalMatrices[std::size_t(i)][0][0]);
+    }
+    program.set("uPointLightCount", points);
+    program.set("uPointLightPosition", positions);
+    program.set("uPointLightIntensity", intensities);
+    program.set("uPointShadowFar", shadows.pointFar);
+    program.set("uDirectionalLightCount", directionals);
+    program.set("uDirectionalLightDirection", directions);
+    program.set("uDirectionalLightIrradiance", irradiances);
+    // Samplers must always see a texture of their type, even with no light of that kind.
+    if (shadows.pointDepth)
+        shadows.pointDepth.bindUnit(8);
+    if (shadows.directionalDepth)
+        shadows.directionalDepth.bindUnit(9);
+}
+
+} // namespace vct::render

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "core/FrameResources.h"
+#include "gl/Program.h"
+#include "scene/Scene.h"
+
+namespace vct::render {
+
+/** Lights beyond these counts are ignored (and reported by the renderer); shaders/common/Lights.glsl agrees. */
+constexpr int kMaxPointLights = 8;
+constexpr int kMaxDirectionalLights = 4;
+
+/** Sets the uniforms and binds the shadow maps that shaders/common/Lights.glsl reads. */
+void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows);
+
+} // namespace vct::render

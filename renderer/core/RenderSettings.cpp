@@ -1,0 +1,186 @@
+#include "core/RenderSettings.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+namespace vct::render {
+
+namespace {
+
+constexpr DebugView kViews[] = {DebugView::Final, DebugView::Direct, DebugView::IndirectDiffuse,
+    DebugView::IndirectSpecular, DebugView::AmbientOcclusion, DebugView::Albedo, DebugView::Normal,
+    DebugView::Emission};
+
+bool parseFloat(const std::string& text, float& out)
+{
+    try {
+        std::size_t used = 0;
+        const float v = std::stof(text, &used);
+        if (used != text.size() || !std::isfinite(v))
+            return false;
+        out = v;
+        return true;
+    } catch (...) {
+        return false;
+    }
+}
+
+bool parseInt(const std::string& text, int& out)
+{
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end;
+}
+
+bool parseBool(const std::string& text, bool& out)
+{
+    if (text == "1" || text == "true" || text == "on" || text == "yes")
+        out = true;
+    else if (text == "0" || text == "false" || text == "off" || text == "no")
+        out = false;
+    else
+        return false;
+    return true;
+}
+
+std::string toText(float v)
+{
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+struct Field {
+    std::function<bool(RenderSettings&, const std::string&)> parse;
+    std::function<std::string(const RenderSettings&)> print;
+    const char* meaning;
+};
+
+template <typename T>
+Field makeField(T RenderSettings::*member, const char* meaning)
+{
+    Field f;
+    f.meaning = meaning;
+    if constexpr (std::is_same_v<T, float>) {
+        f.parse = [member](RenderSettings& s, const std::string& v) { return parseFloat(v, s.*member); };
+        f.print = [member](const RenderSettings& s) { return toText(s.*member); };
+    } else if constexpr (std::is_same_v<T, int>) {
+        f.parse = [member](RenderSettings& s, const std::string& v) { return parseInt(v, s.*member); };
+        f.print = [member](const RenderSettings& s) { return std::to_string(s.*member); };
+    } else {
+        f.parse = [member](RenderSettings& s, const std::string& v) { return parseBool(v, s.*member); };
+        f.print = [member](const RenderSettings& s) { return std::string(s.*member ? "on" : "off"); };
+    }
+    return f;
+}
+
+const std::map<std::string, Field>& fields()
+{
+    static const std::map<std::string, Field> table = [] {
+        std::map<std::string, Field> t;
+        t["voxel_res"] = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
+        t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
+        t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
+        t["diffuse_aperture"] = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
+        t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
+        t["step"] = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
+        t["max_distance"] = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
+        t["cone_offset"] = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
+        t["direct"] = makeField(&RenderSettings::direct, "direct light (on/off)");
+        t["indirect_diffuse"] = makeField(&RenderSettings::indirectDiffuse, "indirect diffuse cones (on/off)");
+        t["indirect_specular"] = makeField(&RenderSettings::indirectSpecular, "specular cone for glossy materials (on/off)");
+        t["ao"] = makeField(&RenderSettings::ambientOcclusion, "ambient occlusion from the diffuse cones (on/off)");
+        t["emission"] = makeField(&RenderSettings::emission, "emissive materials (on/off)");
+        t["shadow_map"] = makeField(&RenderSettings::shadowMapSize, "shadow map texels per side (64..8192)");
+        t["exposure"] = makeField(&RenderSettings::exposure, "exposure multiplier for 8-bit output (>0)");
+        Field view;
+        view.meaning = "final|direct|indirect_diffuse|indirect_specular|ao|albedo|normal|emission";
+        view.parse = [](RenderSettings& s, const std::string& v) {
+            for (DebugView candidate : kViews)
+                if (v == debugViewName(candidate)) {
+                    s.view = candidate;
+                    return true;
+                }
+            return false;
+        };
+        view.print = [](const RenderSettings& s) { return std::string(debugViewName(s.view)); };
+        t["view"] = view;
+        return t;
+    }();
+    return table;
+}
+
+} // namespace
+
+const char* debugViewName(DebugView view)
+{
+    switch (view) {
+    case DebugView::Final: return "final";
+    case DebugView::Direct: return "direct";
+    case DebugView::IndirectDiffuse: return "indirect_diffuse";
+    case DebugView::IndirectSpecular: return "indirect_specular";
+    case DebugView::AmbientOcclusion: return "ao";
+    case DebugView::Albedo: return "albedo";
+    case DebugView::Normal: return "normal";
+    case DebugView::Emission: return "emission";
+    }
+    return "final";
+}
+
+std::string RenderSettings::set(const std::string& key, const std::string& value)
+{
+    const auto it = fields().find(key);
+    if (it == fields().end()) {
+        std::string known;
+        for (const auto& [name, field] : fields())
+            known += (known.empty() ? "" : ", ") + name;
+        return "unknown setting '" + key + "' (known: " + known + ")";
+    }
+    RenderSettings candidate = *this;
+    if (!it->second.parse(candidate, value))
+        return "setting '" + key + "': cannot read '" + value + "' (" + it->second.meaning + ")";
+    if (std::string problem = candidate.validate(); !problem.empty())
+        return problem;
+    *this = candidate;
+    return {};
+}
+
+std::string RenderSettings::validate() const
+{
+    const bool powerOfTwo = voxelResolution > 0 && (voxelResolution & (voxelResolution - 1)) == 0;
+    if (!powerOfTwo || voxelResolution < 8 || voxelResolution > 512)
+        return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
+    if (diffuseConeCount < 1 || diffuseConeCount > 32)
+        return "diffuse_cones must be 1..32, not " + std::to_string(diffuseConeCount);
+    if (!(diffuseApertureDeg > 0.0f && diffuseApertureDeg < 180.0f))
+        return "diffuse_aperture must be between 0 and 180 degrees (exclusive)";
+    if (!(specularApertureDeg > 0.0f && specularApertureDeg < 180.0f))
+        return "specular_aperture must be between 0 and 180 degrees (exclusive)";
+    if (!(stepFactor > 0.0f))
+        return "step must be greater than 0";
+    if (!(coneOffsetVoxels >= 0.0f))
+        return "cone_offset must be 0 or more";
+    if (shadowMapSize < 64 || shadowMapSize > 8192)
+        return "shadow_map must be 64..8192";
+    if (!(exposure > 0.0f))
+        return "exposure must be greater than 0";
+    return {};
+}
+
+std::vector<std::vector<std::string>> RenderSettings::describe() const
+{
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& [name, field] : fields())
+        rows.push_back({name, field.print(*this), field.meaning});
+    return rows;
+}
+
+bool RenderSettings::voxelsDifferFrom(const RenderSettings& other) const
+{
+    return voxelResolution != other.voxelResolution || conservativeVoxelization != other.conservativeVoxelization;
+}
+
+} // namespace vct::render

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vct::render {
+
+/** What to show instead of the final image, for inspecting one term. */
+enum class DebugView { Final, Direct, IndirectDiffuse, IndirectSpecular, AmbientOcclusion, Albedo, Normal, Emission };
+
+/**
+ * Every accuracy and feature setting of a frame. Angles in degrees, distances in metres unless noted.
+ * set() parses the `key=value` form used by `vct-render --set` and the project files.
+ */
+struct RenderSettings {
+    int voxelResolution = 128;          ///< Grid cells per side, power of two, 8..512.
+    bool conservativeVoxelization = true;
+    int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
+    float diffuseApertureDeg = 60.0f;   ///< Full cone angle of each diffuse cone.
+    float specularApertureDeg = 15.0f;  ///< Narrowest specular cone; glossier lobes are clamped to it.
+    float stepFactor = 1.0f;            ///< beta: step = cone diameter * beta.
+    float maxDistance = -1.0f;          ///< Cone length in metres; negative = the grid's diagonal.
+    float coneOffsetVoxels = 1.5f;      ///< Cone origins start this many voxels along the normal.
+    bool direct = true;
+    bool indirectDiffuse = true;
+    bool indirectSpecular = true;
+    bool ambientOcclusion = true;       ///< Computed from the diffuse cones; shown by view=ao.
+    bool emission = true;
+    int shadowMapSize = 1024;           ///< Texels per cube face / directional map side.
+    float exposure = 1.0f;              ///< Multiplier applied before the filmic curve, 8-bit output only.
+    DebugView view = DebugView::Final;
+
+    /** Applies one `key=value`; returns an empty string or a message saying what is wrong. */
+    std::string set(const std::string& key, const std::string& value);
+    /** Checks ranges together; returns an empty string or the first problem. */
+    std::string validate() const;
+    /** (key, current value, meaning) for --help and --stats. */
+    std::vector<std::vector<std::string>> describe() const;
+    /** True when a change from `other` needs the voxels rebuilt (grid or voxelization mode). */
+    bool voxelsDifferFrom(const RenderSettings& other) const;
+};
+
+const char* debugViewName(DebugView view);
+
+} // namespace vct::render

@@ -1,0 +1,249 @@
+#include "core/Renderer.h"
+
+#include "core/ConeSet.h"
+#include "core/FrameContext.h"
+#include "core/Pipeline.h"
+#include "core/ShaderLibrary.h"
+#include "gl/DebugOutput.h"
+#include "passes/CompositePass.h"
+#include "passes/ConeTracePass.h"
+#include "passes/GBufferPass.h"
+#include "passes/InjectLightPass.h"
+#include "passes/MipmapPass.h"
+#include "passes/ShadowMapPass.h"
+#include "passes/VoxelizePass.h"
+
+#include <glad/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace vct::render {
+
+struct Renderer::State {
+    std::unique_ptr<ShaderLibrary> shaders;
+    std::unique_ptr<GpuScene> scene;
+    ChangeVersions versions;
+    VoxelVolume voxels;
+    ShadowMaps shadows;
+    ScreenTargets screen;
+    ConeSet cones = ConeSet::diffuse(5);
+    std::unique_ptr<Pipeline> pipeline;
+};
+
+namespace {
+
+std::unique_ptr<Pipeline> makePipeline()
+{
+    std::vector<std::unique_ptr<RenderPass>> passes;
+    passes.push_back(std::make_unique<ShadowMapPass>());
+    passes.push_back(std::make_unique<VoxelizePass>());
+    passes.push_back(std::make_unique<InjectLightPass>());
+    passes.push_back(std::make_unique<MipmapPass>());
+    passes.push_back(std::make_unique<GBufferPass>());
+    passes.push_back(std::make_unique<ConeTracePass>());
+    passes.push_back(std::make_unique<CompositePass>());
+    return std::make_unique<Pipeline>(std::move(passes));
+}
+
+void resizeScreen(ScreenTargets& s, int width, int height)
+{
+    if (s.width == width && s.height == height && s.final)
+        return;
+    s.width = width;
+    s.height = height;
+    s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
+    s.normal = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.albedo = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.specular = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.emission = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
+    s.gbuffer = gl::Framebuffer::create();
+    int i = 0;
+    for (const gl::Texture* t : {&s.position, &s.normal, &s.albedo, &s.specular, &s.emission})
+        s.gbuffer.attachColor(i++, *t);
+    s.gbuffer.attachDepth(s.depth);
+    s.gbuffer.finish(5);
+    s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.indirectTarget = gl::Framebuffer::create();
+    s.indirectTarget.attachColor(0, s.indirectDiffuse);
+    s.indirectTarget.attachColor(1, s.indirectSpecular);
+    s.indirectTarget.finish(2);
+    s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
+    s.finalTarget = gl::Framebuffer::create();
+    s.finalTarget.attachColor(0, s.final);
+    s.finalTarget.finish(1);
+}
+
+} // namespace
+
+Renderer::Renderer(gl::ProcAddressFunction getProcAddress)
+    : Renderer(getProcAddress, std::make_unique<ShaderLibrary>())
+{
+}
+
+Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<ShaderLibrary> shaders)
+    : m_state(std::make_unique<State>())
+{
+    if (!gl::loadGl(getProcAddress))
+        throw std::runtime_error("OpenGL 4.5 core is not available in the current context");
+    // Averaging voxel fragments needs float image atomics; every driver we target has them.
+    bool atomicFloat = false;
+    GLint extensions = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+    for (GLint i = 0; i < extensions; ++i)
+        if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))), "GL_NV_shader_atomic_float") == 0)
+            atomicFloat = true;
+    if (!atomicFloat)
+        throw std::runtime_error("the GL driver lacks GL_NV_shader_atomic_float, needed to average voxel fragments");
+    gl::DebugOutput::enable();
+    m_state->shaders = std::move(shaders);
+    m_state->pipeline = makePipeline();
+    // Samplers of every type must have a texture even before the shadow pass has run once.
+    m_state->shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, 1, 1);
+    m_state->shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, 1, 1, 1);
+    m_state->scene = std::make_unique<GpuScene>(Scene{});
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene)
+{
+    m_state->scene = std::make_unique<GpuScene>(scene);
+    ++m_state->versions.staticGeometry;
+    ++m_state->versions.dynamicGeometry;
+    ++m_state->versions.lights;
+}
+
+void Renderer::setSettings(const RenderSettings& settings)
+{
+    if (std::string problem = settings.validate(); !problem.empty())
+        throw std::invalid_argument(problem);
+    if (settings.voxelsDifferFrom(m_settings)) {
+        ++m_state->versions.staticGeometry;
+        ++m_state->versions.dynamicGeometry;
+    }
+    if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
+        ++m_state->versions.shading;
+    if (settings.shadowMapSize != m_settings.shadowMapSize)
+        ++m_state->versions.lights;
+    if (settings.diffuseConeCount != m_state->cones.size())
+        m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
+    m_settings = settings;
+}
+
+void Renderer::setMeshTransform(std::size_t mesh, const glm::mat4& transform)
+{
+    if (mesh >= m_state->scene->meshCount())
+        return;
+    const bool dynamic = m_state->scene->scene().meshes[mesh].dynamic;
+    m_state->scene->setTransform(mesh, transform);
+    ++(dynamic ? m_state->versions.dynamicGeometry : m_state->versions.staticGeometry);
+    ++m_state->versions.lights; // shadows move with the geometry
+}
+
+void Renderer::setMaterial(std::size_t index, const Material& material)
+{
+    m_state->scene->setMaterial(index, material);
+    ++m_state->versions.staticGeometry;
+    ++m_state->versions.dynamicGeometry;
+}
+
+void Renderer::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
+{
+    m_state->scene->setLights(points, directionals);
+    ++m_state->versions.lights;
+}
+
+void Renderer::invalidate()
+{
+    m_state->pipeline->invalidate();
+}
+
+FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
+{
+    State& st = *m_state;
+    width = std::max(1, width);
+    height = std::max(1, height);
+    const Scene& scene = st.scene->scene();
+    const VoxelGridFrame wanted = VoxelGridFrame::fit(scene.bounds(), m_settings.voxelResolution);
+    if (wanted.resolution != st.voxels.frame.resolution || wanted.origin != st.voxels.frame.origin
+        || wanted.extent != st.voxels.frame.extent) {
+        // Dynamic meshes are part of the bounds: the grid follows them, so a move may refit the whole grid.
+        st.voxels.frame = wanted;
+        ++st.versions.staticGeometry;
+    }
+    resizeScreen(st.screen, width, height);
+
+    FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
+        camera, glm::mat4(1.0f), glm::mat4(1.0f)};
+    const Aabb bounds = scene.bounds();
+    const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    const float farPlane = glm::length(camera.position - bounds.center()) + 2.0f * sceneRadius;
+    const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
+    frame.view = glm::lookAt(camera.position, camera.lookAt, camera.up);
+    frame.projection = glm::perspective(glm::radians(camera.fovYDeg), float(width) / float(height), nearPlane, farPlane);
+
+    FrameStats stats = st.pipeline->execute(frame);
+    stats.voxelBytes = st.voxels.byteSize();
+    stats.width = width;
+    stats.height = height;
+    stats.voxelResolution = st.voxels.frame.resolution;
+    stats.voxelSize = st.voxels.frame.voxelSize();
+    return stats;
+}
+
+RadianceImage Renderer::readFrame() const
+{
+    const ScreenTargets& s = m_state->screen;
+    RadianceImage image(s.width, s.height);
+    if (!s.final)
+        return image;
+    std::vector<float> rgba(std::size_t(s.width) * std::size_t(s.height) * 4);
+    glGetTextureImage(s.final.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    // GL rows run bottom to top.
+    for (int y = 0; y < s.height; ++y)
+        for (int x = 0; x < s.width; ++x) {
+            const float* p = &rgba[(std::size_t(s.height - 1 - y) * std::size_t(s.width) + std::size_t(x)) * 4];
+            image.at(x, y) = glm::vec3(p[0], p[1], p[2]);
+        }
+    return image;
+}
+
+std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
+{
+    const VoxelVolume& v = m_state->voxels;
+    const gl::Texture* texture = channel == "albedo" ? &v.albedo
+        : channel == "normal"                        ? &v.normal
+        : channel == "emission"                      ? &v.emission
+        : channel == "radiance"                      ? &v.radiance
+                                                     : nullptr;
+    if (!texture || !*texture)
+        throw std::invalid_argument("no voxel channel '" + channel + "' (albedo, normal, emission, radiance)");
+    if (level < 0 || level >= texture->levels())
+        throw std::invalid_argument("voxel level " + std::to_string(level) + " out of range");
+    size = std::max(1, texture->width() >> level);
+    std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
+    glGetTextureImage(texture->id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+    return data;
+}
+
+const Scene& Renderer::scene() const
+{
+    return m_state->scene->scene();
+}
+
+float Renderer::voxelSize() const { return m_state->voxels.frame.voxelSize(); }
+int Renderer::voxelResolution() const { return m_state->voxels.frame.resolution; }
+glm::vec3 Renderer::gridOrigin() const { return m_state->voxels.frame.origin; }
+std::size_t Renderer::voxelBytes() const { return m_state->voxels.byteSize(); }
+
+std::vector<std::string> Renderer::takeGlErrors()
+{
+    return gl::DebugOutput::takeErrors();
+}
+
+} // namespace vct::render

@@ -1,0 +1,66 @@
+#pragma once
+
+#include "core/FrameStats.h"
+#include "core/RenderSettings.h"
+#include "gl/GlLoader.h"
+#include "image/RadianceImage.h"
+#include "scene/Scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vct::render {
+
+class ShaderLibrary;
+
+/**
+ * The voxel cone tracing renderer: owns every GL object and runs the pass pipeline. All calls need the same
+ * GL 4.5 context current. The public API uses std and GLM types only, so Qt widgets, EGL and OSMesa hosts
+ * drive it alike.
+ */
+class Renderer {
+public:
+    /** Loads GL through getProcAddress (glad); throws std::runtime_error when 4.5 core or a needed extension is missing. */
+    explicit Renderer(gl::ProcAddressFunction getProcAddress);
+    /** For tests and hot reload: shaders from a custom library. */
+    Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<ShaderLibrary> shaders);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /** Uploads a whole new scene; the grid is refitted to its bounds. */
+    void setScene(const Scene& scene);
+    /** Applies settings; only what they affect is rebuilt. Throws std::invalid_argument if invalid. */
+    void setSettings(const RenderSettings& settings);
+    const RenderSettings& settings() const { return m_settings; }
+    /** Moves one mesh. Moving a dynamic mesh re-voxelizes dynamic meshes only. */
+    void setMeshTransform(std::size_t mesh, const glm::mat4& transform);
+    void setMaterial(std::size_t index, const Material& material);
+    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
+
+    /** Forgets every cached pass output: the next frame runs every pass (benchmarks, forced-full comparisons). */
+    void invalidate();
+    /** Renders one frame into the internal HDR target. */
+    FrameStats renderFrame(const Camera& camera, int width, int height);
+    /** The last frame's linear radiance, read back from the GPU (top row first). */
+    RadianceImage readFrame() const;
+    /** Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission", "radiance". */
+    std::vector<float> readVoxels(const std::string& channel, int level, int& size) const;
+
+    const Scene& scene() const;
+    /** Grid placement in use (valid after the first frame). */
+    float voxelSize() const;
+    int voxelResolution() const;
+    glm::vec3 gridOrigin() const;
+    std::size_t voxelBytes() const;
+    /** GL errors and KHR_debug messages since the last call. */
+    std::vector<std::string> takeGlErrors();
+
+private:
+    struct State;
+    std::unique_ptr<State> m_state;
+    RenderSettings m_settings;
+};
+
+} // namespace vct::render

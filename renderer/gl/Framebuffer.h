@@ -1,0 +1,33 @@
+#pragma once
+
+#include "gl/Handle.h"
+#include "gl/Texture.h"
+
+#include <vector>
+
+namespace vct::gl {
+
+void deleteFramebuffer(GLuint id);
+
+/** A framebuffer object; attachments are textures owned elsewhere. */
+class Framebuffer {
+public:
+    static Framebuffer create();
+    /** A framebuffer with no attachments whose size is given (used by voxelization). */
+    static Framebuffer createEmpty(int width, int height);
+
+    GLuint id() const { return m_handle.id(); }
+    explicit operator bool() const { return bool(m_handle); }
+    void attachColor(int index, const Texture& texture, int level = 0);
+    void attachColorLayer(int index, const Texture& texture, int layer);
+    void attachDepth(const Texture& texture, int level = 0);
+    void attachDepthLayer(const Texture& texture, int layer);
+    /** Enables draw buffers 0..count-1 and throws std::runtime_error if incomplete. */
+    void finish(int colorCount);
+    void bind() const;
+
+private:
+    Handle<deleteFramebuffer> m_handle;
+};
+
+} // namespace vct::gl

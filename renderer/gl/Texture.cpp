@@ -1,0 +1,141 @@
+#include "gl/Texture.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace vct::gl {
+
+void deleteTexture(GLuint id)
+{
+    glDeleteTextures(1, &id);
+}
+
+std::size_t bytesPerTexel(GLenum internalFormat)
+{
+    switch (internalFormat) {
+    case GL_R8:
+        return 1;
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_R32F:
+    case GL_R32UI:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_COMPONENT24:
+    case GL_RGB10_A2:
+        return 4;
+    case GL_RGBA16F:
+    case GL_RG32F:
+        return 8;
+    case GL_RGBA32F:
+        return 16;
+    default:
+        throw std::logic_error("bytesPerTexel: unknown internal format");
+    }
+}
+
+Texture::Texture(GLenum target, GLenum format, int w, int h, int d, int levels)
+    : m_target(target), m_format(format), m_width(w), m_height(h), m_depth(d), m_levels(levels)
+{
+    GLuint id = 0;
+    glCreateTextures(target, 1, &id);
+    m_handle = Handle<deleteTexture>(id);
+}
+
+Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels)
+{
+    Texture t(GL_TEXTURE_2D, internalFormat, width, height, 1, levels);
+    glTextureStorage2D(t.id(), levels, internalFormat, width, height);
+    t.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers)
+{
+    Texture t(GL_TEXTURE_2D_ARRAY, internalFormat, width, height, layers, 1);
+    glTextureStorage3D(t.id(), 1, internalFormat, width, height, layers);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+Texture Texture::create3D(GLenum internalFormat, int size, int levels)
+{
+    Texture t(GL_TEXTURE_3D, internalFormat, size, size, size, levels);
+    glTextureStorage3D(t.id(), levels, internalFormat, size, size, size);
+    t.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+    // Outside the grid is empty space: border zero, so cones fade out instead of smearing the edge voxels.
+    t.setWrap(GL_CLAMP_TO_BORDER);
+    t.setBorderColor(0, 0, 0, 0);
+    return t;
+}
+
+Texture Texture::create3D(GLenum internalFormat, int width, int height, int depth)
+{
+    Texture t(GL_TEXTURE_3D, internalFormat, width, height, depth, 1);
+    glTextureStorage3D(t.id(), 1, internalFormat, width, height, depth);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+Texture Texture::createCubeArray(GLenum internalFormat, int size, int cubes)
+{
+    Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, internalFormat, size, size, 6 * cubes, 1);
+    glTextureStorage3D(t.id(), 1, internalFormat, size, size, 6 * cubes);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+void Texture::setFilter(GLenum minFilter, GLenum magFilter)
+{
+    glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+    glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(magFilter));
+}
+
+void Texture::setWrap(GLenum wrap)
+{
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GLint(wrap));
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GLint(wrap));
+    glTextureParameteri(id(), GL_TEXTURE_WRAP_R, GLint(wrap));
+}
+
+void Texture::setBorderColor(float r, float g, float b, float a)
+{
+    const float color[4] = {r, g, b, a};
+    glTextureParameterfv(id(), GL_TEXTURE_BORDER_COLOR, color);
+}
+
+void Texture::bindUnit(GLuint unit) const
+{
+    glBindTextureUnit(unit, id());
+}
+
+void Texture::bindImage(GLuint unit, int level, GLenum access, GLenum format) const
+{
+    const bool layered = m_target != GL_TEXTURE_2D;
+    glBindImageTexture(unit, id(), level, layered ? GL_TRUE : GL_FALSE, 0, access, format ? format : m_format);
+}
+
+void Texture::clear()
+{
+    for (int level = 0; level < m_levels; ++level)
+        glClearTexImage(id(), level, GL_RGBA, GL_FLOAT, nullptr);
+}
+
+std::size_t Texture::byteSize() const
+{
+    std::size_t total = 0;
+    int w = m_width, h = m_height, d = m_depth;
+    for (int level = 0; level < m_levels; ++level) {
+        total += std::size_t(w) * std::size_t(h) * std::size_t(d) * bytesPerTexel(m_format);
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
+        if (m_target == GL_TEXTURE_3D)
+            d = std::max(1, d / 2);
+    }
+    return total;
+}
+
+} // namespace vct::gl

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "gl/Handle.h"
+
+#include <cstddef>
+
+namespace vct::gl {
+
+void deleteTexture(GLuint id);
+
+/** An immutable-storage texture of any target (DSA). */
+class Texture {
+public:
+    Texture() = default;
+    static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
+    static Texture create2DArray(GLenum internalFormat, int width, int height, int layers);
+    static Texture create3D(GLenum internalFormat, int size, int levels = 1);
+    /** A single-level 3D texture that need not be a cube. */
+    static Texture create3D(GLenum internalFormat, int width, int height, int depth);
+    static Texture createCubeArray(GLenum internalFormat, int size, int cubes);
+
+    GLuint id() const { return m_handle.id(); }
+    GLenum target() const { return m_target; }
+    GLenum format() const { return m_format; }
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    int depth() const { return m_depth; }
+    int levels() const { return m_levels; }
+    explicit operator bool() const { return bool(m_handle); }
+
+    void setFilter(GLenum minFilter, GLenum magFilter);
+    void setWrap(GLenum wrap);
+    void setBorderColor(float r, float g, float b, float a);
+    void bindUnit(GLuint unit) const;
+    /** Binds one mip level as an image (all layers of a 3D or array texture). */
+    void bindImage(GLuint unit, int level, GLenum access, GLenum format = 0) const;
+    /** Fills every level with zero. */
+    void clear();
+    /** Bytes of texel storage over all levels, from the internal format's size. */
+    std::size_t byteSize() const;
+
+private:
+    Texture(GLenum target, GLenum format, int w, int h, int d, int levels);
+    Handle<deleteTexture> m_handle;
+    GLenum m_target = 0;
+    GLenum m_format = 0;
+    int m_width = 0, m_height = 0, m_depth = 0, m_levels = 0;
+};
+
+/** Bytes per texel of the internal formats we use. */
+std::size_t bytesPerTexel(GLenum internalFormat);
+
+} // namespace vct::gl

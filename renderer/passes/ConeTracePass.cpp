@@ -1,0 +1,64 @@
+#include "passes/ConeTracePass.h"
+
+#include "core/FrameContext.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+namespace vct::render {
+
+PassDecision ConeTracePass::plan(const FrameContext& frame)
+{
+    const bool specular = frame.settings.indirectSpecular && frame.scene.scene().hasGlossyMaterial();
+    if (!frame.settings.indirectDiffuse && !specular && !frame.settings.ambientOcclusion)
+        return {PassDecision::Action::Skip, "indirect light and AO are off"};
+    return {PassDecision::Action::Run, specular ? "per-frame: diffuse and specular cones" : "per-frame: diffuse cones"};
+}
+
+void ConeTracePass::execute(FrameContext& frame)
+{
+    if (!m_program) {
+        m_program = frame.shaders.build({"cone trace", {"common/FullScreen.vert", "cone/ConeTrace.frag"}, {}});
+        m_emptyVao = gl::VertexArray::create();
+    }
+    const RenderSettings& settings = frame.settings;
+    const VoxelVolume& v = frame.voxels;
+    ScreenTargets& s = frame.screen;
+    const float voxel = v.frame.voxelSize();
+    const float maxDistance = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
+    std::vector<glm::vec4> cones;
+    for (int i = 0; i < frame.diffuseCones.size(); ++i)
+        cones.emplace_back(frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
+
+    m_program.set("uGridOrigin", v.frame.origin);
+    m_program.set("uGridExtent", v.frame.extent);
+    m_program.set("uVoxelSize", voxel);
+    m_program.set("uMaxLevel", float(v.radiance.levels() - 1));
+    m_program.set("uStepFactor", settings.stepFactor);
+    m_program.set("uMaxDistance", maxDistance);
+    m_program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
+    m_program.set("uConeCount", frame.diffuseCones.size());
+    m_program.set("uCones", cones);
+    m_program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
+    m_program.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
+    m_program.set("uDiffuseEnabled", settings.indirectDiffuse || settings.ambientOcclusion ? 1 : 0);
+    m_program.set("uSpecularEnabled", settings.indirectSpecular ? 1 : 0);
+    m_program.set("uAoDistance", 0.1f * v.frame.extent);
+    m_program.set("uCameraPosition", frame.camera.position);
+
+    s.position.bindUnit(0);
+    s.normal.bindUnit(1);
+    s.specular.bindUnit(3);
+    v.radiance.bindUnit(5);
+    s.indirectTarget.bind();
+    glViewport(0, 0, s.width, s.height);
+    glDisable(GL_DEPTH_TEST);
+    m_program.use();
+    m_emptyVao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace vct::render

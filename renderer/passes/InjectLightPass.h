@@ -1,0 +1,29 @@
+#pragma once
+
+#include "core/RenderPass.h"
+#include "gl/Program.h"
+
+#include <array>
+#include <cstdint>
+
+namespace vct::render {
+
+/** Writes level 0 of the radiance volume: shadowed direct light reflected by each voxel, plus emission. */
+class InjectLightPass final : public RenderPass {
+public:
+    const char* name() const override { return "inject light"; }
+    PassDeclaration declare() const override
+    {
+        return {{Resource::VoxelMaterials, Resource::ShadowMaps}, {Resource::VoxelRadiance}};
+    }
+    PassDecision plan(const FrameContext& frame) override;
+    void execute(FrameContext& frame) override;
+    void invalidate() override { m_key = {}; }
+
+private:
+    std::array<std::uint64_t, 4> keyOf(const FrameContext& frame) const;
+    gl::Program m_program;
+    std::array<std::uint64_t, 4> m_key{};
+};
+
+} // namespace vct::render

@@ -1,0 +1,24 @@
+#pragma once
+
+#include "core/RenderPass.h"
+#include "gl/Program.h"
+
+#include <cstdint>
+
+namespace vct::render {
+
+/** Fills mip levels 1..N of the radiance volume by 2x2x2 box filtering, each level from the one below. */
+class MipmapPass final : public RenderPass {
+public:
+    const char* name() const override { return "mipmaps"; }
+    PassDeclaration declare() const override { return {{Resource::VoxelRadiance}, {Resource::VoxelMips}}; }
+    PassDecision plan(const FrameContext& frame) override;
+    void execute(FrameContext& frame) override;
+    void invalidate() override { m_radianceVersion = 0; }
+
+private:
+    gl::Program m_program;
+    std::uint64_t m_radianceVersion = 0;
+};
+
+} // namespace vct::render

@@ -1,0 +1,117 @@
+#include "passes/ShadowMapPass.h"
+
+#include "core/FrameContext.h"
+#include "core/LightUniforms.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace vct::render {
+
+namespace {
+
+std::array<std::uint64_t, 4> keyOf(const FrameContext& frame)
+{
+    return {frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lights,
+        std::uint64_t(frame.settings.shadowMapSize)};
+}
+
+bool anyShadowCaster(const Scene& scene)
+{
+    for (const PointLight& l : scene.pointLights)
+        if (l.castsShadows)
+            return true;
+    for (const DirectionalLight& l : scene.directionalLights)
+        if (l.castsShadows)
+            return true;
+    return false;
+}
+
+} // namespace
+
+PassDecision ShadowMapPass::plan(const FrameContext& frame)
+{
+    if (!anyShadowCaster(frame.scene.scene()))
+        return {PassDecision::Action::Skip, "no shadow-casting light"};
+    if (keyOf(frame) == m_key)
+        return {PassDecision::Action::Reuse, "lights and geometry unchanged"};
+    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "first frame" : "lights or geometry changed"};
+}
+
+void ShadowMapPass::execute(FrameContext& frame)
+{
+    if (!m_program)
+        m_program = frame.shaders.build({"shadow depth", {"shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag"}, {}});
+    m_key = keyOf(frame);
+    const Scene& scene = frame.scene.scene();
+    ShadowMaps& shadows = frame.shadows;
+    const int size = frame.settings.shadowMapSize;
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    if (shadows.size != size || shadows.pointDepth.depth() != 6 * std::max(points, 1)
+        || shadows.directionalDepth.depth() != std::max(directionals, 1)) {
+        shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
+        shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
+        shadows.size = size;
+    }
+    if (!shadows.framebuffer)
+        shadows.framebuffer = gl::Framebuffer::create();
+    const Aabb bounds = scene.bounds();
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    shadows.pointFar = 0.0f;
+    for (int i = 0; i < points; ++i) {
+        const glm::vec3 p = scene.pointLights[std::size_t(i)].position;
+        shadows.pointFar = std::max(shadows.pointFar, glm::length(p - bounds.center()) + radius);
+    }
+    shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-3f);
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glViewport(0, 0, size, size);
+    shadows.framebuffer.bind();
+    const float clearDepth = 1.0f;
+    // Standard cube-map face orientation, so texture(samplerCubeArray, direction) finds the right texel.
+    static const glm::vec3 kFaceDirection[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    const float nearPlane = std::max(shadows.pointFar * 1e-4f, 1e-4f);
+    const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, nearPlane, shadows.pointFar);
+    m_program.set("uLinearDistance", 1);
+    m_program.set("uFar", shadows.pointFar);
+    for (int i = 0; i < points; ++i) {
+        const PointLight& light = scene.pointLights[std::size_t(i)];
+        m_program.set("uLightPosition", light.position);
+        for (int face = 0; face < 6; ++face) {
+            shadows.framebuffer.attachDepthLayer(shadows.pointDepth, 6 * i + face);
+            shadows.framebuffer.finish(0);
+            glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+            if (!light.castsShadows)
+                continue;
+            const glm::mat4 view = glm::lookAt(light.position, light.position + kFaceDirection[face], kFaceUp[face]);
+            m_program.set("uViewProjection", cubeProjection * view);
+            frame.scene.draw(m_program, MeshFilter::All, 0);
+        }
+    }
+    shadows.directionalMatrices.clear();
+    m_program.set("uLinearDistance", 0);
+    for (int i = 0; i < directionals; ++i) {
+        const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
+        const glm::vec3 dir = glm::normalize(light.direction);
+        const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+        const glm::mat4 view = glm::lookAt(bounds.center() - dir * (2.0f * radius), bounds.center(), up);
+        const glm::mat4 projection = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f);
+        shadows.directionalMatrices.push_back(projection * view);
+        shadows.framebuffer.attachDepthLayer(shadows.directionalDepth, i);
+        shadows.framebuffer.finish(0);
+        glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+        if (!light.castsShadows)
+            continue;
+        m_program.set("uViewProjection", shadows.directionalMatrices.back());
+        frame.scene.draw(m_program, MeshFilter::All, 0);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ++shadows.version;
+}
+
+} // namespace vct::render

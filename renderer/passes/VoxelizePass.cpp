@@ -1,0 +1,116 @@
+#include "passes/VoxelizePass.h"
+
+#include "core/FrameContext.h"
+
+namespace vct::render {
+
+namespace {
+
+void dispatchOverGrid(int resolution)
+{
+    const GLuint groups = GLuint((resolution + 3) / 4);
+    glDispatchCompute(groups, groups, groups);
+}
+
+} // namespace
+
+PassDecision VoxelizePass::plan(const FrameContext& frame)
+{
+    if (m_staticVersion == 0)
+        return {PassDecision::Action::Run, "first frame"};
+    if (m_staticVersion != frame.versions.staticGeometry)
+        return {PassDecision::Action::Run, "static geometry, materials or grid changed"};
+    if (m_dynamicVersion != frame.versions.dynamicGeometry)
+        return {PassDecision::Action::Run, "a dynamic object moved: static voxels kept, dynamic ones redone"};
+    return {PassDecision::Action::Reuse, "geometry unchanged"};
+}
+
+void VoxelizePass::ensureResources(FrameContext& frame)
+{
+    if (!m_voxelize) {
+        m_voxelize = frame.shaders.build(
+            {"voxelize", {"voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag"}, {}});
+        m_resolve = frame.shaders.build({"voxel resolve", {"voxelize/Resolve.comp"}, {}});
+    }
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    if (v.albedo && v.albedo.width() == res)
+        return;
+    const int levels = v.frame.levelCount();
+    // One r32f atlas of 2 x 2 x 3 slots holds the ten running sums (see common/VoxelAccumulators.glsl).
+    v.accumulators = gl::Texture::create3D(GL_R32F, 2 * res, 2 * res, 3 * res);
+    v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
+    v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
+    v.staticEmission = gl::Texture::create3D(GL_RGBA16F, res);
+    v.albedo = gl::Texture::create3D(GL_RGBA8, res);
+    v.normal = gl::Texture::create3D(GL_RGBA16F, res);
+    v.emission = gl::Texture::create3D(GL_RGBA16F, res);
+    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
+    for (gl::Texture* t : {&v.staticAlbedo, &v.staticNormal, &v.staticEmission, &v.albedo, &v.normal, &v.emission})
+        t->setFilter(GL_NEAREST, GL_NEAREST);
+    m_framebuffer = gl::Framebuffer::createEmpty(res, res);
+}
+
+void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes)
+{
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    v.accumulators.clear();
+    m_framebuffer.bind();
+    glViewport(0, 0, res, res);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const bool nvConservative = GLAD_GL_NV_conservative_raster && frame.settings.conservativeVoxelization;
+    if (nvConservative)
+        glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    m_voxelize.set("uGridOrigin", v.frame.origin);
+    m_voxelize.set("uGridExtent", v.frame.extent);
+    m_voxelize.set("uResolution", res);
+    // With hardware conservative raster the geometry shader need not enlarge triangles itself.
+    m_voxelize.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
+    v.accumulators.bindImage(0, 0, GL_READ_WRITE);
+    frame.scene.draw(m_voxelize, dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static, 0);
+    if (nvConservative)
+        glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer)
+{
+    VoxelVolume& v = frame.voxels;
+    m_resolve.use();
+    m_resolve.set("uResolution", v.frame.resolution);
+    m_resolve.set("uMergeStatic", mergeStatic ? 1 : 0);
+    v.accumulators.bindImage(0, 0, GL_READ_ONLY);
+    (intoStaticLayer ? v.staticAlbedo : v.albedo).bindImage(1, 0, GL_WRITE_ONLY);
+    (intoStaticLayer ? v.staticNormal : v.normal).bindImage(2, 0, GL_WRITE_ONLY);
+    (intoStaticLayer ? v.staticEmission : v.emission).bindImage(3, 0, GL_WRITE_ONLY);
+    v.staticAlbedo.bindUnit(0);
+    v.staticNormal.bindUnit(1);
+    v.staticEmission.bindUnit(2);
+    dispatchOverGrid(v.frame.resolution);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void VoxelizePass::execute(FrameContext& frame)
+{
+    ensureResources(frame);
+    const bool hasDynamic = frame.scene.hasDynamicMeshes();
+    if (m_staticVersion != frame.versions.staticGeometry) {
+        accumulate(frame, false);
+        // Without dynamic meshes the static layer is the final one: resolve straight into it.
+        resolve(frame, false, hasDynamic);
+        m_staticVersion = frame.versions.staticGeometry;
+    }
+    if (hasDynamic) {
+        accumulate(frame, true);
+        resolve(frame, true, false);
+    }
+    m_dynamicVersion = frame.versions.dynamicGeometry;
+    ++frame.voxels.materialsVersion;
+}
+
+} // namespace vct::render

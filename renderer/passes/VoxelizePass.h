@@ -1,0 +1,36 @@
+#pragma once
+
+#include "core/RenderPass.h"
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+
+#include <cstdint>
+
+namespace vct::render {
+
+/**
+ * Rasterises the triangles into the voxel grid (dominant-axis projection in a geometry shader, conservative
+ * by default) and resolves the sums into averaged albedo/opacity, normal and emission. Static meshes are
+ * voxelized into their own layer when they change; dynamic meshes are redone on top of it whenever they move.
+ */
+class VoxelizePass final : public RenderPass {
+public:
+    const char* name() const override { return "voxelize"; }
+    PassDeclaration declare() const override { return {{}, {Resource::VoxelMaterials}}; }
+    PassDecision plan(const FrameContext& frame) override;
+    void execute(FrameContext& frame) override;
+    void invalidate() override { m_staticVersion = m_dynamicVersion = 0; }
+
+private:
+    void ensureResources(FrameContext& frame);
+    void accumulate(FrameContext& frame, bool dynamicMeshes);
+    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer);
+
+    gl::Program m_voxelize;
+    gl::Program m_resolve;
+    gl::Framebuffer m_framebuffer;
+    std::uint64_t m_staticVersion = 0;
+    std::uint64_t m_dynamicVersion = 0;
+};
+
+} // namespace vct::render

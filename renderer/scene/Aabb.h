@@ -1,0 +1,32 @@
+#pragma once
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include <limits>
+
+namespace vct::render {
+
+/** Axis-aligned box; empty until a point is added. */
+struct Aabb {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+
+    bool isEmpty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    void extend(const glm::vec3& p)
+    {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Aabb& other)
+    {
+        if (!other.isEmpty()) {
+            extend(other.min);
+            extend(other.max);
+        }
+    }
+    glm::vec3 size() const { return isEmpty() ? glm::vec3(0.0f) : max - min; }
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+};
+
+} // namespace vct::render

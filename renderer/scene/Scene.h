@@ -1,0 +1,33 @@
+#pragma once
+
+#include "scene/Aabb.h"
+#include "scene/Camera.h"
+#include "scene/DirectionalLight.h"
+#include "scene/Material.h"
+#include "scene/Mesh.h"
+#include "scene/PointLight.h"
+#include "scene/TextureImage.h"
+
+#include <vector>
+
+namespace vct::render {
+
+/** Everything the renderer draws: plain data, no GL. */
+struct Scene {
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<TextureImage> textures;
+    std::vector<PointLight> pointLights;
+    std::vector<DirectionalLight> directionalLights;
+    Camera camera; ///< The scene's suggested view.
+
+    /** World-space bounds of all meshes (transforms applied). */
+    Aabb bounds() const;
+    /** World-space bounds of the static meshes only, or of the dynamic ones. */
+    Aabb bounds(bool dynamicMeshes) const;
+    std::size_t triangleCount() const;
+    bool hasEmissiveMaterial() const;
+    bool hasGlossyMaterial() const;
+};
+
+} // namespace vct::render

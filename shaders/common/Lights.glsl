@@ -1,0 +1,64 @@
+// Analytic lights with shadow maps, shared by voxel injection and the per-pixel composite.
+// Units: point intensity W/sr, directional irradiance W/m^2; results are irradiance (W/m^2) or radiance.
+#define MAX_POINT_LIGHTS 8
+#define MAX_DIRECTIONAL_LIGHTS 4
+#define POINT_SHADOW_UNIT 8
+#define DIRECTIONAL_SHADOW_UNIT 9
+
+uniform int uPointLightCount;
+uniform vec4 uPointLightPosition[MAX_POINT_LIGHTS];  // w = 1 when it casts shadows
+uniform vec4 uPointLightIntensity[MAX_POINT_LIGHTS];
+uniform float uPointShadowFar;
+uniform int uDirectionalLightCount;
+uniform vec4 uDirectionalLightDirection[MAX_DIRECTIONAL_LIGHTS]; // travel direction, w = shadows
+uniform vec4 uDirectionalLightIrradiance[MAX_DIRECTIONAL_LIGHTS];
+uniform mat4 uDirectionalLightMatrix[MAX_DIRECTIONAL_LIGHTS];
+layout(binding = POINT_SHADOW_UNIT) uniform samplerCubeArray uPointShadow;
+layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DArray uDirectionalShadow;
+
+// p is already pushed off the surface by the caller; the bias absorbs depth quantisation only.
+float pointLightVisibility(int i, vec3 p)
+{
+    if (uPointLightPosition[i].w < 0.5)
+        return 1.0;
+    vec3 fromLight = p - uPointLightPosition[i].xyz;
+    float dist = length(fromLight);
+    float stored = texture(uPointShadow, vec4(fromLight, float(i))).r * uPointShadowFar;
+    return dist <= stored + 1e-3 * uPointShadowFar ? 1.0 : 0.0;
+}
+
+float directionalLightVisibility(int i, vec3 p)
+{
+    if (uDirectionalLightDirection[i].w < 0.5)
+        return 1.0;
+    vec4 clip = uDirectionalLightMatrix[i] * vec4(p, 1.0);
+    vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
+    if (any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
+        return 1.0;
+    float stored = texture(uDirectionalShadow, vec3(coord.xy, float(i))).r;
+    return coord.z <= stored + 2e-3 ? 1.0 : 0.0;
+}
+
+// Lights are indexed point lights first, then directional ones.
+int lightCount()
+{
+    return uPointLightCount + uDirectionalLightCount;
+}
+
+vec3 lightDirection(int index, vec3 p)
+{
+    if (index < uPointLightCount)
+        return normalize(uPointLightPosition[index].xyz - p);
+    return -normalize(uDirectionalLightDirection[index - uPointLightCount].xyz);
+}
+
+// Irradiance light `index` delivers at p on a surface facing it, with its shadow tested at shadowPoint.
+vec3 lightIrradiance(int index, vec3 p, vec3 shadowPoint)
+{
+    if (index < uPointLightCount) {
+        vec3 d = uPointLightPosition[index].xyz - p;
+        return uPointLightIntensity[index].rgb / max(dot(d, d), 1e-8) * pointLightVisibility(index, shadowPoint);
+    }
+    int i = index - uPointLightCount;
+    return uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, shadowPoint);
+}
