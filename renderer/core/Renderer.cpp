@@ -30,6 +30,7 @@ struct Renderer::State {
     ShadowMaps shadows;
     ScreenTargets screen;
     ConeSet cones = ConeSet::diffuse(5);
+    Aabb gridBounds; ///< empty: fit the scene
     std::unique_ptr<Pipeline> pipeline;
 };
 
@@ -118,6 +119,11 @@ void Renderer::setScene(const Scene& scene)
     ++m_state->versions.lights;
 }
 
+void Renderer::setGridBounds(const Aabb& bounds)
+{
+    m_state->gridBounds = bounds;
+}
+
 void Renderer::setSettings(const RenderSettings& settings)
 {
     if (std::string problem = settings.validate(); !problem.empty())
@@ -169,7 +175,8 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     width = std::max(1, width);
     height = std::max(1, height);
     const Scene& scene = st.scene->scene();
-    const VoxelGridFrame wanted = VoxelGridFrame::fit(scene.bounds(), m_settings.voxelResolution);
+    const VoxelGridFrame wanted = VoxelGridFrame::fit(
+        st.gridBounds.isEmpty() ? scene.bounds() : st.gridBounds, m_settings.voxelResolution);
     if (wanted.resolution != st.voxels.frame.resolution || wanted.origin != st.voxels.frame.origin
         || wanted.extent != st.voxels.frame.extent) {
         // Dynamic meshes are part of the bounds: the grid follows them, so a move may refit the whole grid.

@@ -31,6 +31,11 @@ public:
 
     /** Uploads a whole new scene; the grid is refitted to its bounds. */
     void setScene(const Scene& scene);
+    /**
+     * Fits the voxel grid around `bounds` instead of the scene's bounds (an empty box restores the default).
+     * For a region of interest in a large scene, and for tests that need voxels at known places.
+     */
+    void setGridBounds(const Aabb& bounds);
     /** Applies settings; only what they affect is rebuilt. Throws std::invalid_argument if invalid. */
     void setSettings(const RenderSettings& settings);
     const RenderSettings& settings() const { return m_settings; }

@@ -33,3 +33,49 @@ QString outputDir()
 }
 
 } // namespace vct::test
+
+#include "GlTestContext.h"
+
+namespace vct::test {
+
+GlTestContext GlTestContext::create(const std::string& backend)
+{
+    GlTestContext result;
+    result.context = render::HeadlessContext::create(backend, result.error);
+    if (!result.context)
+        return result;
+    try {
+        result.renderer = std::make_unique<render::Renderer>(result.context->procAddressFunction());
+    } catch (const std::exception& e) {
+        result.error = e.what();
+    }
+    return result;
+}
+
+} // namespace vct::test
+
+#include <glm/geometric.hpp>
+
+namespace vct::test {
+
+render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material)
+{
+    render::Mesh mesh;
+    mesh.positions = positions;
+    mesh.material = material;
+    for (std::size_t i = 0; i + 2 < positions.size(); i += 3) {
+        const glm::vec3 n = glm::normalize(glm::cross(positions[i + 1] - positions[i], positions[i + 2] - positions[i]));
+        for (int k = 0; k < 3; ++k) {
+            mesh.normals.push_back(n);
+            mesh.indices.push_back(std::uint32_t(i + std::size_t(k)));
+        }
+    }
+    return mesh;
+}
+
+std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d)
+{
+    return {a, b, c, a, c, d};
+}
+
+} // namespace vct::test

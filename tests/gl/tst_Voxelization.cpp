@@ -1,0 +1,220 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include <glm/geometric.hpp>
+
+#include <QtTest>
+
+#include <set>
+#include <tuple>
+
+using namespace vct;
+
+namespace {
+
+using Voxel = std::tuple<int, int, int>;
+
+// Exact triangle / axis-aligned box overlap by the separating axis theorem (Akenine-Moeller).
+bool triangleOverlapsBox(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 center, float half)
+{
+    a -= center;
+    b -= center;
+    c -= center;
+    const glm::vec3 e[3] = {b - a, c - b, a - c};
+    const glm::vec3 axesUnit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    auto separated = [&](const glm::vec3& axis) {
+        const float pa = glm::dot(a, axis), pb = glm::dot(b, axis), pc = glm::dot(c, axis);
+        const float r = half * (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
+        return std::min({pa, pb, pc}) > r || std::max({pa, pb, pc}) < -r;
+    };
+    for (const glm::vec3& u : axesUnit)
+        for (const glm::vec3& edge : e)
+            if (separated(glm::cross(u, edge)))
+                return false;
+    for (const glm::vec3& u : axesUnit)
+        if (separated(u))
+            return false;
+    return !separated(glm::cross(e[0], e[1]));
+}
+
+std::set<Voxel> occupiedVoxels(render::Renderer& renderer)
+{
+    int size = 0;
+    const std::vector<float> albedo = renderer.readVoxels("albedo", 0, size);
+    std::set<Voxel> voxels;
+    for (int z = 0; z < size; ++z)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x)
+                if (albedo[((std::size_t(z) * size + y) * size + x) * 4 + 3] > 0.5f)
+                    voxels.insert({x, y, z});
+    return voxels;
+}
+
+std::set<Voxel> expectedConservative(const render::Renderer& renderer, glm::vec3 a, glm::vec3 b, glm::vec3 c)
+{
+    std::set<Voxel> voxels;
+    const int n = renderer.voxelResolution();
+    const float v = renderer.voxelSize();
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const glm::vec3 center = renderer.gridOrigin() + (glm::vec3(x, y, z) + 0.5f) * v;
+                // A hair inside the box so touching at a face or edge does not count.
+                if (triangleOverlapsBox(a, b, c, center, 0.5f * v * 0.999f))
+                    voxels.insert({x, y, z});
+            }
+    return voxels;
+}
+
+QString describe(const std::set<Voxel>& s)
+{
+    QStringList parts;
+    for (const auto& [x, y, z] : s)
+        parts << QString("(%1,%2,%3)").arg(x).arg(y).arg(z);
+    return parts.join(' ');
+}
+
+} // namespace
+
+class VoxelizationTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void knownTriangleGivesExactlyItsVoxels_data();
+    void knownTriangleGivesExactlyItsVoxels();
+    void tiltedTriangleIsCoveredConservatively();
+    void subVoxelSliverNeedsConservativeVoxelization();
+    void overlappingSurfacesAverage();
+    void noGlErrors();
+
+private:
+    void voxelize(const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo = glm::vec3(0.5f));
+    test::GlTestContext m_gl;
+};
+
+void VoxelizationTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+}
+
+// A 16^3 grid over [0, 16]^3 after fitting: the bounds are chosen so voxels are 1 unit and start at 0.
+void VoxelizationTest::voxelize(const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo)
+{
+    render::Scene scene;
+    render::Material material;
+    material.albedo = albedo;
+    scene.materials.push_back(material);
+    scene.meshes.push_back(test::makeTriangles(triangles));
+    render::RenderSettings settings;
+    settings.voxelResolution = 16;
+    settings.conservativeVoxelization = conservative;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    render::Aabb bounds;
+    bounds.extend(glm::vec3(1.0f));
+    bounds.extend(glm::vec3(15.0f)); // fit() adds one cell each side: the grid spans exactly [0, 16]
+    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+    QVERIFY(std::abs(m_gl.renderer->voxelSize() - 1.0f) < 1e-5f);
+    QVERIFY(glm::length(m_gl.renderer->gridOrigin()) < 1e-5f);
+}
+
+void VoxelizationTest::knownTriangleGivesExactlyItsVoxels_data()
+{
+    QTest::addColumn<bool>("conservative");
+    QTest::newRow("conservative") << true;
+    QTest::newRow("plain") << false;
+}
+
+void VoxelizationTest::knownTriangleGivesExactlyItsVoxels()
+{
+    QFETCH(bool, conservative);
+    // A right isosceles triangle in the plane z = 5.3, legs along x and y: its exact voxel set is known both
+    // ways. Plain rasterisation keeps voxels whose column centre lies inside; conservative keeps every voxel
+    // the triangle touches.
+    const glm::vec3 a(2.2f, 3.2f, 5.3f), b(9.7f, 3.2f, 5.3f), c(2.2f, 10.7f, 5.3f);
+    voxelize({a, b, c}, conservative);
+    const std::set<Voxel> actual = occupiedVoxels(*m_gl.renderer);
+    std::set<Voxel> expected;
+    if (conservative) {
+        expected = expectedConservative(*m_gl.renderer, a, b, c);
+    } else {
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                const float px = x + 0.5f, py = y + 0.5f;
+                if (px > a.x && py > a.y && (px - a.x) + (py - a.y) < (b.x - a.x))
+                    expected.insert({x, y, 5});
+            }
+    }
+    QVERIFY(!expected.empty());
+    QVERIFY2(actual == expected,
+        qPrintable(QString("actual %1\nexpected %2").arg(describe(actual), describe(expected))));
+}
+
+void VoxelizationTest::tiltedTriangleIsCoveredConservatively()
+{
+    const glm::vec3 a(2.3f, 2.6f, 3.1f), b(12.4f, 5.2f, 9.7f), c(4.9f, 13.1f, 6.2f);
+    voxelize({a, b, c}, true);
+    const std::set<Voxel> actual = occupiedVoxels(*m_gl.renderer);
+    const std::set<Voxel> expected = expectedConservative(*m_gl.renderer, a, b, c);
+    std::set<Voxel> missing;
+    for (const Voxel& v : expected)
+        if (!actual.count(v))
+            missing.insert(v);
+    QVERIFY2(missing.empty(), qPrintable("missing " + describe(missing)));
+    // Enlargement overshoots near acute corners and in depth; keep the excess modest.
+    QVERIFY2(actual.size() <= expected.size() * 3 / 2,
+        qPrintable(QString("%1 voxels for %2 touched").arg(actual.size()).arg(expected.size())));
+}
+
+void VoxelizationTest::subVoxelSliverNeedsConservativeVoxelization()
+{
+    // 0.1 voxel wide, between pixel centres: no column centre lies inside it.
+    const std::vector<glm::vec3> sliver = {{2.1f, 6.55f, 4.5f}, {13.9f, 6.6f, 4.5f}, {2.1f, 6.65f, 4.5f}};
+    voxelize(sliver, false);
+    QCOMPARE(occupiedVoxels(*m_gl.renderer).size(), std::size_t(0));
+    voxelize(sliver, true);
+    const std::set<Voxel> kept = occupiedVoxels(*m_gl.renderer);
+    const std::set<Voxel> expected = expectedConservative(*m_gl.renderer, sliver[0], sliver[1], sliver[2]);
+    QVERIFY(!expected.empty());
+    QVERIFY2(kept == expected, qPrintable(QString("kept %1\nexpected %2").arg(describe(kept), describe(expected))));
+}
+
+void VoxelizationTest::overlappingSurfacesAverage()
+{
+    // Two coplanar quads with different albedos over the same voxels: the voxel holds the mean.
+    render::Scene scene;
+    render::Material red, blue;
+    red.albedo = glm::vec3(0.8f, 0.0f, 0.0f);
+    blue.albedo = glm::vec3(0.0f, 0.0f, 0.4f);
+    scene.materials = {red, blue};
+    const auto q = test::quad({4.2f, 4.2f, 7.5f}, {8.8f, 4.2f, 7.5f}, {8.8f, 8.8f, 7.5f}, {4.2f, 8.8f, 7.5f});
+    scene.meshes.push_back(test::makeTriangles(q, 0));
+    scene.meshes.push_back(test::makeTriangles(q, 1));
+    render::RenderSettings settings;
+    settings.voxelResolution = 16;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    render::Aabb bounds;
+    bounds.extend(glm::vec3(1.0f));
+    bounds.extend(glm::vec3(15.0f));
+    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+    int size = 0;
+    const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
+    const std::size_t i = ((std::size_t(7) * size + 6) * size + 6) * 4; // an interior voxel of the quads
+    QVERIFY(std::abs(albedo[i + 0] - 0.4f) < 1.5f / 255.0f);
+    QVERIFY(std::abs(albedo[i + 2] - 0.2f) < 1.5f / 255.0f);
+    QCOMPARE(albedo[i + 3], 1.0f);
+}
+
+void VoxelizationTest::noGlErrors()
+{
+    const auto errors = m_gl.renderer->takeGlErrors();
+    QVERIFY2(errors.empty(), errors.empty() ? "" : errors.front().c_str());
+}
+
+QTEST_GUILESS_MAIN(VoxelizationTest)
+#include "tst_Voxelization.moc"
