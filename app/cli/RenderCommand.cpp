@@ -52,14 +52,14 @@ int RenderCommand::run(int argc, char** argv)
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("builtin:NAME or a model file"));
     const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (shared/reference format)."), QStringLiteral("cam.json"));
-    const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON added to the scene's lights."), QStringLiteral("lights.json"));
+    const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
     const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Image height in pixels (default: camera file or 360)."), QStringLiteral("H"));
     const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Output image: .png, .pfm or .exr (default out.png)."), QStringLiteral("FILE"), QStringLiteral("out.png"));
     const QCommandLineOption voxelOption(QStringLiteral("voxel-res"), QStringLiteral("Voxel grid resolution, power of two 8..512 (same as --set voxel_res=N)."), QStringLiteral("N"));
     const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
     const QCommandLineOption statsOption(QStringLiteral("stats"), QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."), QStringLiteral("stats.json"));
-    const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames; stats give the median of frames after the first (which compiles shaders). Default 1."), QStringLiteral("N"), QStringLiteral("1"));
+    const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames (every pass re-run); --stats gives the median of frames 2..N, leaving out the first, which compiles shaders. Default 1."), QStringLiteral("N"), QStringLiteral("1"));
     const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
         statsOption, framesOption, glOption});
@@ -92,8 +92,15 @@ int RenderCommand::run(int argc, char** argv)
     doc::SceneLoadInfo info;
     if (!doc::SceneLoader::load(sceneSpec, scene, &error, &info))
         return fail(1, error);
-    if (parser.isSet(lightsOption) && !doc::LightsFile::read(parser.value(lightsOption), scene, &error))
-        return fail(1, error);
+    if (parser.isSet(lightsOption)) {
+        // An explicit lights file replaces the lights of the scene (or of a sibling NAME.lights.json).
+        render::Scene lit = scene;
+        lit.pointLights.clear();
+        lit.directionalLights.clear();
+        if (!doc::LightsFile::read(parser.value(lightsOption), lit, &error))
+            return fail(1, error);
+        scene = std::move(lit);
+    }
     int width = info.width > 0 ? info.width : 640;
     int height = info.height > 0 ? info.height : 360;
     render::Camera camera = scene.camera;

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "CameraSetup.h"
+
+#include <QString>
+
+namespace vct::doc {
+
+/**
+ * The pinhole camera file of shared/reference (*.camera.json):
+ * `{"position": [x,y,z], "look_at": [x,y,z], "up": [x,y,z], "fov_y_deg": 40, "width": 256, "height": 256}`.
+ * Positions in metres, field of view vertical in degrees, size in pixels. `up` is optional (default +Y).
+ */
+class CameraFile {
+public:
+    /** Reads `path` into `setup`; on failure returns false, leaves `setup` alone and names file and field in
+     * `error`. */
+    static bool read(const QString& path, CameraSetup& setup, QString* error);
+    /** Writes `setup` as indented JSON; false with a message on I/O failure. */
+    static bool write(const QString& path, const CameraSetup& setup, QString* error);
+};
+
+} // namespace vct::doc

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <QJsonObject>
+#include <QString>
+
+namespace vct::doc {
+
+/**
+ * Reads typed, finite fields out of a JSON object and, on the first failure, builds an error message that
+ * names the file and the field path ("cornell.camera.json: field 'lights[1].position': expected 3 finite
+ * numbers"). Each read returns false on failure and leaves the output untouched.
+ */
+class JsonFieldReader {
+public:
+    /** `fileName` is used in messages only. */
+    explicit JsonFieldReader(QString fileName);
+
+    /** Parses a whole file into an object; false (with an error) when it is unreadable or not a JSON object.
+     */
+    bool readFile(const QString& path, QJsonObject* root);
+
+    bool hasField(const QJsonObject& object, const QString& key) const;
+    /** A finite number. `fieldPath` is the name shown in errors, e.g. "lights[0].intensity". */
+    bool readNumber(const QJsonObject& object, const QString& key, const QString& fieldPath, double* value);
+    /** An integer in [minimum, maximum]. */
+    bool readInt(const QJsonObject& object, const QString& key, const QString& fieldPath, int minimum,
+        int maximum, int* value);
+    bool readBool(const QJsonObject& object, const QString& key, const QString& fieldPath, bool* value);
+    bool readString(const QJsonObject& object, const QString& key, const QString& fieldPath, QString* value);
+    /** An array of exactly three finite numbers. */
+    bool readVec3(const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value);
+
+    /** Records an error about `fieldPath` (or the whole file if empty); always returns false. */
+    bool fail(const QString& fieldPath, const QString& problem);
+    const QString& error() const { return m_error; }
+
+private:
+    QString m_fileName;
+    QString m_error;
+};
+
+} // namespace vct::doc

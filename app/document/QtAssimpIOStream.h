@@ -1,0 +1,30 @@
+#pragma once
+
+#include <assimp/IOStream.hpp>
+
+#include <QFile>
+
+namespace vct::doc {
+
+/** An Assimp stream over a QFile, so Assimp can read Qt resources (":/...") as well as plain files. */
+class QtAssimpIOStream final : public Assimp::IOStream {
+public:
+    /** Names the file; nothing is opened until open(). */
+    explicit QtAssimpIOStream(const QString& path);
+    ~QtAssimpIOStream() override;
+
+    /** Opens the file for reading or writing (Assimp's fopen-style mode); false if that failed. */
+    bool open(const char* mode);
+
+    size_t Read(void* buffer, size_t size, size_t count) override;
+    size_t Write(const void* buffer, size_t size, size_t count) override;
+    aiReturn Seek(size_t offset, aiOrigin origin) override;
+    size_t Tell() const override;
+    size_t FileSize() const override;
+    void Flush() override;
+
+private:
+    QFile m_file;
+};
+
+} // namespace vct::doc

@@ -1,0 +1,173 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <QtTest>
+
+using namespace vct;
+
+class LightInjectionTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void litVoxelMatchesLambertFormula();
+    void shadowedVoxelsGetNoLight();
+    void directionalLightUsesIrradiance();
+    void emissionIsAddedUnshadowed();
+    void mipLevelsAreBoxFilters();
+    void noGlErrors();
+
+private:
+    /** Floor quad y = 0.5 over x,z in [1, 15] of a 16-unit grid at [0, 16]^3; optional occluder above it. */
+    render::Scene floorScene(bool occluder);
+    void render(const render::Scene& scene, int resolution = 16);
+    glm::vec4 voxel(const std::string& channel, int x, int y, int z, int level = 0);
+    test::GlTestContext m_gl;
+    const glm::vec3 m_albedo{0.6f, 0.5f, 0.4f};
+    const glm::vec3 m_lightPosition{5.0f, 9.0f, 7.0f};
+    const glm::vec3 m_intensity{30.0f, 20.0f, 10.0f};
+};
+
+void LightInjectionTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+}
+
+render::Scene LightInjectionTest::floorScene(bool occluder)
+{
+    render::Scene scene;
+    render::Material floor;
+    floor.albedo = m_albedo;
+    scene.materials.push_back(floor);
+    // Floor in the middle of voxel layer y = 0 so the voxel centre lies on it.
+    scene.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1})));
+    if (occluder) // a 2x2 blocker at y = 5.5 over x in [6, 8], z in [7, 9]; its shadow falls around (10, 9.5)
+        scene.meshes.push_back(test::makeTriangles(test::quad({6, 5.5f, 9}, {8, 5.5f, 9}, {8, 5.5f, 7}, {6, 5.5f, 7})));
+    scene.pointLights.push_back({m_lightPosition, m_intensity, true});
+    return scene;
+}
+
+void LightInjectionTest::render(const render::Scene& scene, int resolution)
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = resolution;
+    settings.shadowMapSize = 512;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    render::Aabb bounds;
+    bounds.extend(glm::vec3(1.0f) * 16.0f / float(resolution));
+    bounds.extend(glm::vec3(16.0f - 16.0f / float(resolution)));
+    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+}
+
+glm::vec4 LightInjectionTest::voxel(const std::string& channel, int x, int y, int z, int level)
+{
+    int size = 0;
+    const std::vector<float> data = m_gl.renderer->readVoxels(channel, level, size);
+    const float* p = &data[((std::size_t(z) * size + y) * size + x) * 4];
+    return {p[0], p[1], p[2], p[3]};
+}
+
+void LightInjectionTest::litVoxelMatchesLambertFormula()
+{
+    render(floorScene(false));
+    for (const glm::ivec3 v : {glm::ivec3(5, 0, 7), glm::ivec3(2, 0, 3), glm::ivec3(12, 0, 13), glm::ivec3(9, 0, 4)}) {
+        const glm::vec3 center = glm::vec3(v) + 0.5f;
+        const glm::vec3 toLight = m_lightPosition - center;
+        const float d2 = glm::dot(toLight, toLight);
+        const float cosTheta = toLight.y / std::sqrt(d2);
+        const glm::vec3 expected = m_albedo / glm::pi<float>() * m_intensity / d2 * cosTheta;
+        const glm::vec4 actual = voxel("radiance", v.x, v.y, v.z);
+        QCOMPARE(actual.a, 1.0f);
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs(actual[c] - expected[c]) <= 0.02f * expected[c],
+                qPrintable(QString("voxel (%1,%2,%3) channel %4: %5 vs %6").arg(v.x).arg(v.y).arg(v.z).arg(c)
+                        .arg(actual[c]).arg(expected[c])));
+    }
+    QCOMPARE(voxel("radiance", 5, 3, 7), glm::vec4(0.0f)); // empty space stays empty
+}
+
+void LightInjectionTest::shadowedVoxelsGetNoLight()
+{
+    render(floorScene(true));
+    // Project the blocker's centre from the light onto the floor plane y = 0.5.
+    const glm::vec3 blocker(7.0f, 5.5f, 8.0f);
+    const glm::vec3 dir = blocker - m_lightPosition;
+    const glm::vec3 hit = m_lightPosition + dir * ((0.5f - m_lightPosition.y) / dir.y);
+    const glm::ivec3 shadowed(int(hit.x), 0, int(hit.z));
+    QVERIFY(shadowed.x >= 1 && shadowed.x < 15 && shadowed.z >= 1 && shadowed.z < 15);
+    const glm::vec4 dark = voxel("radiance", shadowed.x, 0, shadowed.z);
+    QCOMPARE(dark.a, 1.0f);
+    QVERIFY2(dark.r == 0.0f && dark.g == 0.0f && dark.b == 0.0f, qPrintable(QString("%1").arg(dark.r)));
+    // Outside the shadow the same floor is lit.
+    QVERIFY(voxel("radiance", 3, 0, 3).r > 0.0f);
+}
+
+void LightInjectionTest::directionalLightUsesIrradiance()
+{
+    render::Scene scene = floorScene(false);
+    scene.pointLights.clear();
+    const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, -2.0f, 0.5f));
+    scene.directionalLights.push_back({direction, glm::vec3(3.0f), true});
+    render(scene);
+    const float cosTheta = -direction.y;
+    const glm::vec3 expected = m_albedo / glm::pi<float>() * 3.0f * cosTheta;
+    const glm::vec4 actual = voxel("radiance", 7, 0, 7);
+    for (int c = 0; c < 3; ++c)
+        QVERIFY2(std::abs(actual[c] - expected[c]) <= 0.02f * expected[c], qPrintable(QString("%1 vs %2").arg(actual[c]).arg(expected[c])));
+}
+
+void LightInjectionTest::emissionIsAddedUnshadowed()
+{
+    render::Scene scene = floorScene(true);
+    scene.pointLights.clear();
+    scene.materials[0].emission = glm::vec3(2.0f, 1.0f, 0.5f);
+    render(scene);
+    const glm::vec4 v = voxel("radiance", 10, 0, 10); // under the blocker: emission needs no light
+    QVERIFY(std::abs(v.r - 2.0f) < 2e-3f && std::abs(v.g - 1.0f) < 1e-3f && std::abs(v.b - 0.5f) < 1e-3f);
+}
+
+void LightInjectionTest::mipLevelsAreBoxFilters()
+{
+    render::Scene scene = floorScene(true);
+    scene.materials[0].emission = glm::vec3(0.3f, 0.2f, 0.1f); // mixes lit, shadowed and emissive voxels
+    render(scene, 16);
+    int size0 = 0;
+    const std::vector<float> level0 = m_gl.renderer->readVoxels("radiance", 0, size0);
+    for (int level = 1; level <= 4; ++level) {
+        int size = 0;
+        const std::vector<float> mip = m_gl.renderer->readVoxels("radiance", level, size);
+        QCOMPARE(size, size0 >> level);
+        const int block = 1 << level;
+        double worst = 0.0;
+        for (int z = 0; z < size; ++z)
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x)
+                    for (int c = 0; c < 4; ++c) {
+                        double sum = 0.0;
+                        for (int k = 0; k < block; ++k)
+                            for (int j = 0; j < block; ++j)
+                                for (int i = 0; i < block; ++i)
+                                    sum += level0[((std::size_t(z * block + k) * size0 + (y * block + j)) * size0 + (x * block + i)) * 4 + c];
+                        const double expected = sum / double(block * block * block);
+                        const double actual = mip[((std::size_t(z) * size + y) * size + x) * 4 + c];
+                        // Half floats round at every level: allow their relative precision per level.
+                        worst = std::max(worst, std::abs(actual - expected) - 2e-3 * level * std::abs(expected));
+                    }
+        QVERIFY2(worst <= 1e-5, qPrintable(QString("level %1 off by %2").arg(level).arg(worst)));
+    }
+}
+
+void LightInjectionTest::noGlErrors()
+{
+    const auto errors = m_gl.renderer->takeGlErrors();
+    QVERIFY2(errors.empty(), errors.empty() ? "" : errors.front().c_str());
+}
+
+QTEST_GUILESS_MAIN(LightInjectionTest)
+#include "tst_LightInjection.moc"
