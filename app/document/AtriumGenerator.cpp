@@ -251,7 +251,10 @@ void AtriumGenerator::generate(render::Scene& scene)
 {
     const int stoneMaterial = addMaterial(scene, "atrium_stone", { 0.68f, 0.64f, 0.58f });
     const int columnMaterial = addMaterial(scene, "atrium_column", { 0.7f, 0.67f, 0.61f });
-    const int floorMaterial = addMaterial(scene, "atrium_floor", { 0.55f, 0.5f, 0.44f });
+    const int floorMaterial = addMaterial(scene, "atrium_floor", { 0.5f, 0.45f, 0.39f });
+    // Polished stone, as in the paper's courtyard: a faint glossy reflection exercises the specular cone.
+    scene.materials[std::size_t(floorMaterial)].specular = glm::vec3(0.08f);
+    scene.materials[std::size_t(floorMaterial)].shininess = 80.0f;
     const std::array<int, 3> clothMaterials {
         addMaterial(scene, "cloth_red", { 0.75f, 0.08f, 0.06f }),
         addMaterial(scene, "cloth_green", { 0.1f, 0.55f, 0.15f }),

@@ -14,7 +14,7 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
 {
     if (keyOf(frame) == m_key)
         return {PassDecision::Action::Reuse, "voxels, lights and shadows unchanged"};
-    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "first frame" : "voxels or lights changed"};
+    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "no valid output yet" : "voxels or lights changed"};
 }
 
 void InjectLightPass::execute(FrameContext& frame)

@@ -36,7 +36,7 @@ PassDecision ShadowMapPass::plan(const FrameContext& frame)
         return {PassDecision::Action::Skip, "no shadow-casting light"};
     if (keyOf(frame) == m_key)
         return {PassDecision::Action::Reuse, "lights and geometry unchanged"};
-    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "first frame" : "lights or geometry changed"};
+    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "no valid output yet" : "lights or geometry changed"};
 }
 
 void ShadowMapPass::execute(FrameContext& frame)

@@ -17,7 +17,7 @@ void dispatchOverGrid(int resolution)
 PassDecision VoxelizePass::plan(const FrameContext& frame)
 {
     if (m_staticVersion == 0)
-        return {PassDecision::Action::Run, "first frame"};
+        return {PassDecision::Action::Run, "no valid output yet"};
     if (m_staticVersion != frame.versions.staticGeometry)
         return {PassDecision::Action::Run, "static geometry, materials or grid changed"};
     if (m_dynamicVersion != frame.versions.dynamicGeometry)
