@@ -63,10 +63,7 @@ void DynamicObjectTest::movingDynamicMeshRevoxelizesOnlyItself()
     settings.voxelResolution = 16;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene());
-    render::Aabb bounds;
-    bounds.extend(glm::vec3(1.0f));
-    bounds.extend(glm::vec3(15.0f));
-    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
     const render::Camera camera{{8, 8, 30}, {8, 4, 8}, {0, 1, 0}, 40.0f, 0.01f};
     m_gl.renderer->renderFrame(camera, 16, 16);
     QCOMPARE(occupancy(4, 4, 4), 1.0f);

@@ -58,10 +58,7 @@ void LightInjectionTest::render(const render::Scene& scene, int resolution)
     settings.shadowMapSize = 512;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
-    render::Aabb bounds;
-    bounds.extend(glm::vec3(1.0f) * 16.0f / float(resolution));
-    bounds.extend(glm::vec3(16.0f - 16.0f / float(resolution)));
-    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f) * 16.0f / float(resolution), glm::vec3(16.0f - 16.0f / float(resolution))));
     m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
 }
 

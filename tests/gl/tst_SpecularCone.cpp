@@ -49,10 +49,7 @@ render::RadianceImage SpecularConeTest::renderSpecular(bool glossy)
     settings.view = render::DebugView::IndirectSpecular;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
-    render::Aabb bounds;
-    bounds.extend(glm::vec3(0.5f));
-    bounds.extend(glm::vec3(15.5f));
-    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f), glm::vec3(15.5f)));
     m_gl.renderer->renderFrame(m_camera, kSize, kSize);
     return m_gl.renderer->readFrame();
 }

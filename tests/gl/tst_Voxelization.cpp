@@ -112,10 +112,8 @@ void VoxelizationTest::voxelize(const std::vector<glm::vec3>& triangles, bool co
     settings.conservativeVoxelization = conservative;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
-    render::Aabb bounds;
-    bounds.extend(glm::vec3(1.0f));
-    bounds.extend(glm::vec3(15.0f)); // fit() adds one cell each side: the grid spans exactly [0, 16]
-    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
+    // fit() adds one cell on each side: the 16^3 grid spans exactly [0, 16]^3.
     m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
     QVERIFY(std::abs(m_gl.renderer->voxelSize() - 1.0f) < 1e-5f);
     QVERIFY(glm::length(m_gl.renderer->gridOrigin()) < 1e-5f);
@@ -197,10 +195,7 @@ void VoxelizationTest::overlappingSurfacesAverage()
     settings.voxelResolution = 16;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
-    render::Aabb bounds;
-    bounds.extend(glm::vec3(1.0f));
-    bounds.extend(glm::vec3(15.0f));
-    m_gl.renderer->setGridBounds(bounds);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
     m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
     int size = 0;
     const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);

@@ -1,10 +1,13 @@
 #include "TestSupport.h"
 
+#include "GlTestContext.h"
+
+#include <glm/geometric.hpp>
+
 #include <QDir>
 #include <QProcessEnvironment>
 
 namespace vct::test {
-
 namespace {
 
 QString env(const char* name, const QString& fallback)
@@ -32,12 +35,6 @@ QString outputDir()
     return dir;
 }
 
-} // namespace vct::test
-
-#include "GlTestContext.h"
-
-namespace vct::test {
-
 GlTestContext GlTestContext::create(const std::string& backend)
 {
     GlTestContext result;
@@ -51,12 +48,6 @@ GlTestContext GlTestContext::create(const std::string& backend)
     }
     return result;
 }
-
-} // namespace vct::test
-
-#include <glm/geometric.hpp>
-
-namespace vct::test {
 
 render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material)
 {
@@ -76,6 +67,14 @@ render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d)
 {
     return {a, b, c, a, c, d};
+}
+
+render::Aabb box(glm::vec3 lo, glm::vec3 hi)
+{
+    render::Aabb b;
+    b.extend(lo);
+    b.extend(hi);
+    return b;
 }
 
 } // namespace vct::test

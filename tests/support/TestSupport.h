@@ -1,6 +1,11 @@
 #pragma once
 
+#include "scene/Aabb.h"
+#include "scene/Mesh.h"
+
 #include <QString>
+
+#include <vector>
 
 namespace vct::test {
 
@@ -11,17 +16,11 @@ QString referenceDir();
 /** Where tests write actual/diff images; created on demand. */
 QString outputDir();
 
-} // namespace vct::test
-
-#include "scene/Mesh.h"
-
-#include <vector>
-
-namespace vct::test {
-
 /** A mesh of unindexed triangles (three positions each) with flat normals. */
 render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material = 0);
 /** A quad (two triangles) with corners a, b, c, d counter-clockwise seen from the front. */
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+/** The box spanning two corners. */
+render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 
 } // namespace vct::test
