@@ -60,7 +60,7 @@ int RenderCommand::run(int argc, char** argv)
     const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
     const QCommandLineOption statsOption(QStringLiteral("stats"), QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."), QStringLiteral("stats.json"));
     const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames (every pass re-run); --stats gives the median of frames 2..N, leaving out the first, which compiles shaders. Default 1."), QStringLiteral("N"), QStringLiteral("1"));
-    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
         statsOption, framesOption, glOption});
     parser.process(app);
@@ -125,6 +125,12 @@ int RenderCommand::run(int argc, char** argv)
 
     std::string contextError;
     auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
+    if (!context && !parser.isSet(glOption)) {
+        // OSMesa is the second choice; a machine without EGL's surfaceless platform may still have it.
+        std::string osmesaError;
+        context = render::HeadlessContext::create("osmesa", osmesaError);
+        contextError += "; then " + osmesaError;
+    }
     if (!context)
         return fail(2, QString::fromStdString(contextError));
 
