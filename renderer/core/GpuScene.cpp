@@ -43,7 +43,7 @@ GpuScene::GpuScene(const Scene& scene)
             ++levels;
         gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, std::max(1, image.width), std::max(1, image.height), levels);
         if (image.width > 0 && image.height > 0 && image.rgba.size() >= std::size_t(image.width) * image.height * 4) {
-            // TextureImage rows run top to bottom and the importer keeps the file's UV convention (v up).
+            // TextureImage rows run top to bottom and the importer flips V (aiProcess_FlipUVs): row 0 is t = 0.
             glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
             glGenerateTextureMipmap(texture.id());
         }
