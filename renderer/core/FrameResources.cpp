@@ -7,6 +7,8 @@ std::size_t VoxelVolume::byteSize() const
     std::size_t total = 0;
     for (const gl::Texture* t : {&accumulators, &staticAlbedo, &staticNormal, &staticEmission, &albedo, &normal, &emission, &radiance})
         total += *t ? t->byteSize() : 0;
+    for (const gl::Texture& t : directional)
+        total += t ? t.byteSize() : 0;
     return total;
 }
 

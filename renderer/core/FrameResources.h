@@ -22,6 +22,8 @@ struct VoxelVolume {
     gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
     gl::Texture emission; ///< rgba16f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
+    /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid level k+1).
+    std::array<gl::Texture, 6> directional;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
 

@@ -83,6 +83,7 @@ const std::map<std::string, Field>& fields()
         std::map<std::string, Field> t;
         t["voxel_res"] = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
         t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
+        t["anisotropic"] = makeField(&RenderSettings::anisotropicMips, "direction-dependent mips: six chains composited along each axis (on/off)");
         t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
         t["diffuse_aperture"] = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
         t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");

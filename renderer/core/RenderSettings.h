@@ -15,6 +15,9 @@ enum class DebugView { Final, Direct, IndirectDiffuse, IndirectSpecular, Ambient
 struct RenderSettings {
     int voxelResolution = 128;          ///< Grid cells per side, power of two, 8..512.
     bool conservativeVoxelization = true;
+    /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
+    /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample.
+    bool anisotropicMips = false;
     int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
     float diffuseApertureDeg = 60.0f;   ///< Full cone angle of each diffuse cone.
     float specularApertureDeg = 15.0f;  ///< Narrowest specular cone; glossier lobes are clamped to it.

@@ -79,6 +79,16 @@ void resizeScreen(ScreenTargets& s, int width, int height)
     s.finalTarget.finish(1);
 }
 
+std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& size)
+{
+    if (level < 0 || level >= texture.levels())
+        throw std::invalid_argument("voxel level " + std::to_string(level) + " out of range");
+    size = std::max(1, texture.width() >> level);
+    std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
+    glGetTextureImage(texture.id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+    return data;
+}
+
 } // namespace
 
 Renderer::Renderer(gl::ProcAddressFunction getProcAddress)
@@ -223,6 +233,13 @@ RadianceImage Renderer::readFrame() const
 std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
 {
     const VoxelVolume& v = m_state->voxels;
+    static const char* const kDirectional[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
+    for (std::size_t d = 0; d < 6; ++d)
+        if (channel == kDirectional[d]) {
+            if (!v.directional[d] || level < 1)
+                throw std::invalid_argument("no " + channel + " level " + std::to_string(level) + " (needs anisotropic mips, levels from 1)");
+            return readTextureLevel(v.directional[d], level - 1, size);
+        }
     const gl::Texture* texture = channel == "albedo" ? &v.albedo
         : channel == "normal"                        ? &v.normal
         : channel == "emission"                      ? &v.emission
@@ -230,12 +247,7 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
                                                      : nullptr;
     if (!texture || !*texture)
         throw std::invalid_argument("no voxel channel '" + channel + "' (albedo, normal, emission, radiance)");
-    if (level < 0 || level >= texture->levels())
-        throw std::invalid_argument("voxel level " + std::to_string(level) + " out of range");
-    size = std::max(1, texture->width() >> level);
-    std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
-    glGetTextureImage(texture->id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
-    return data;
+    return readTextureLevel(*texture, level, size);
 }
 
 const Scene& Renderer::scene() const

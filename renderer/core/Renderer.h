@@ -50,7 +50,10 @@ public:
     FrameStats renderFrame(const Camera& camera, int width, int height);
     /** The last frame's linear radiance, read back from the GPU (top row first). */
     RadianceImage readFrame() const;
-    /** Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission", "radiance". */
+    /**
+     * Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission",
+     * "radiance", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels 1..N).
+     */
     std::vector<float> readVoxels(const std::string& channel, int level, int& size) const;
 
     const Scene& scene() const;

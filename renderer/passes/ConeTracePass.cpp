@@ -51,6 +51,10 @@ void ConeTracePass::execute(FrameContext& frame)
     s.normal.bindUnit(1);
     s.specular.bindUnit(3);
     v.radiance.bindUnit(5);
+    const bool anisotropic = settings.anisotropicMips && v.directional[0];
+    m_program.set("uAnisotropic", anisotropic ? 1 : 0);
+    for (std::size_t d = 0; d < 6; ++d)
+        (anisotropic ? v.directional[d] : v.radiance).bindUnit(GLuint(6 + d));
     s.indirectTarget.bind();
     glViewport(0, 0, s.width, s.height);
     glDisable(GL_DEPTH_TEST);

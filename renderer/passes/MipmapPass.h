@@ -17,8 +17,11 @@ public:
     void invalidate() override { m_radianceVersion = 0; }
 
 private:
+    void buildDirectional(FrameContext& frame);
     gl::Program m_program;
+    gl::Program m_directionalProgram;
     std::uint64_t m_radianceVersion = 0;
+    bool m_anisotropic = false;
 };
 
 } // namespace vct::render

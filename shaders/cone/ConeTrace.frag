@@ -8,6 +8,14 @@ layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
 layout(binding = 3) uniform sampler2D gSpecular;
 layout(binding = 5) uniform sampler3D uRadiance;
+// Direction-dependent mips (RenderSettings::anisotropicMips): level k here is grid level k + 1.
+layout(binding = 6) uniform sampler3D uTowardsPosX;
+layout(binding = 7) uniform sampler3D uTowardsNegX;
+layout(binding = 8) uniform sampler3D uTowardsPosY;
+layout(binding = 9) uniform sampler3D uTowardsNegY;
+layout(binding = 10) uniform sampler3D uTowardsPosZ;
+layout(binding = 11) uniform sampler3D uTowardsNegZ;
+uniform bool uAnisotropic;
 
 uniform vec3 uGridOrigin;
 uniform float uGridExtent;
@@ -30,6 +38,19 @@ layout(location = 1) out vec4 oSpecular;
 
 const int kMaxSteps = 256;
 
+// The volume as a cone travelling along dir sees it at a (fractional) mip level.
+vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
+{
+    if (!uAnisotropic || level <= 0.0)
+        return textureLod(uRadiance, uvw, level);
+    vec3 w = dir * dir; // sums to one for a unit direction
+    float l = max(level - 1.0, 0.0);
+    vec4 directional = w.x * (dir.x > 0.0 ? textureLod(uTowardsPosX, uvw, l) : textureLod(uTowardsNegX, uvw, l))
+        + w.y * (dir.y > 0.0 ? textureLod(uTowardsPosY, uvw, l) : textureLod(uTowardsNegY, uvw, l))
+        + w.z * (dir.z > 0.0 ? textureLod(uTowardsPosZ, uvw, l) : textureLod(uTowardsNegZ, uvw, l));
+    return level < 1.0 ? mix(textureLod(uRadiance, uvw, 0.0), directional, level) : directional;
+}
+
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity.
 vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, out float occlusion)
 {
@@ -44,7 +65,7 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, out float occlusion)
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
             break;
         float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
-        vec4 s = textureLod(uRadiance, uvw, level);
+        vec4 s = sampleVolume(uvw, level, dir);
         if (s.a > 1e-4) {
             float a = correctOpacity(s.a, stepLength, uVoxelSize * exp2(level));
             color += (1.0 - alpha) * s.rgb * (a / s.a);

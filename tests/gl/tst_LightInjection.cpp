@@ -18,12 +18,13 @@ private slots:
     void directionalLightUsesIrradiance();
     void emissionIsAddedUnshadowed();
     void mipLevelsAreBoxFilters();
+    void directionalMipsKeepThinWallsOpaque();
     void noGlErrors();
 
 private:
     /** Floor quad y = 0.5 over x,z in [1, 15] of a 16-unit grid at [0, 16]^3; optional occluder above it. */
     render::Scene floorScene(bool occluder);
-    void render(const render::Scene& scene, int resolution = 16);
+    void render(const render::Scene& scene, int resolution = 16, bool anisotropic = false);
     glm::vec4 voxel(const std::string& channel, int x, int y, int z, int level = 0);
     test::GlTestContext m_gl;
     const glm::vec3 m_albedo{0.6f, 0.5f, 0.4f};
@@ -51,9 +52,10 @@ render::Scene LightInjectionTest::floorScene(bool occluder)
     return scene;
 }
 
-void LightInjectionTest::render(const render::Scene& scene, int resolution)
+void LightInjectionTest::render(const render::Scene& scene, int resolution, bool anisotropic)
 {
     render::RenderSettings settings;
+    settings.anisotropicMips = anisotropic;
     settings.voxelResolution = resolution;
     settings.shadowMapSize = 512;
     m_gl.renderer->setSettings(settings);
@@ -158,6 +160,29 @@ void LightInjectionTest::mipLevelsAreBoxFilters()
                     }
         QVERIFY2(worst <= 1e-5, qPrintable(QString("level %1 off by %2").arg(level).arg(worst)));
     }
+}
+
+// The floor fills one of the two voxel layers under each level-1 texel. Box filtering halves its opacity and
+// radiance; compositing along y first keeps it opaque for cones travelling up or down, not sideways.
+void LightInjectionTest::directionalMipsKeepThinWallsOpaque()
+{
+    render::Scene scene = floorScene(false);
+    scene.pointLights.clear();
+    scene.materials[0].emission = glm::vec3(1.0f, 0.5f, 0.25f);
+    render(scene, 16, true);
+    const glm::vec4 isotropic = voxel("radiance", 3, 0, 3, 1);
+    QVERIFY(std::abs(isotropic.a - 0.5f) < 1e-3f);
+    QVERIFY(std::abs(isotropic.r - 0.5f) < 2e-3f);
+    for (const char* channel : {"radiance+y", "radiance-y"}) {
+        const glm::vec4 v = voxel(channel, 3, 0, 3, 1);
+        QVERIFY2(std::abs(v.a - 1.0f) < 1e-3f && std::abs(v.r - 1.0f) < 2e-3f,
+            qPrintable(QString("%1: a %2 r %3").arg(channel).arg(v.a).arg(v.r)));
+    }
+    for (const char* channel : {"radiance+x", "radiance-z"})
+        QVERIFY(std::abs(voxel(channel, 3, 0, 3, 1).a - 0.5f) < 1e-3f);
+    // A level further up, the floor is one layer of four: upward cones still see it whole.
+    QVERIFY(std::abs(voxel("radiance+y", 1, 0, 1, 2).a - 1.0f) < 1e-3f);
+    QVERIFY(std::abs(voxel("radiance", 1, 0, 1, 2).a - 0.25f) < 1e-3f);
 }
 
 void LightInjectionTest::noGlErrors()
