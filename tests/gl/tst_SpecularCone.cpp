@@ -20,7 +20,7 @@ private:
     render::RadianceImage renderSpecular(bool glossy);
     glm::ivec2 pixelOf(const glm::vec3& world) const;
     test::GlTestContext m_gl;
-    const render::Camera m_camera{{8.0f, 4.0f, 14.0f}, {8.0f, 0.5f, 6.0f}, {0, 1, 0}, 50.0f, 0.01f};
+    const render::Camera m_camera{{8.0f, 4.0f, 14.0f}, {8.0f, 0.5f, 6.0f}, {0, 1, 0}, 70.0f, 0.01f};
     static constexpr int kSize = 48;
 };
 
@@ -65,10 +65,12 @@ glm::ivec2 SpecularConeTest::pixelOf(const glm::vec3& world) const
 void SpecularConeTest::glossyFloorMirrorsEmitter()
 {
     const render::RadianceImage image = renderSpecular(true);
-    // The mirror ray from (8, 0.5, 6) rises to y = 2.25 at the wall: it sees the light. From (8, 0.5, 12)
-    // it passes far above the wall and sees nothing.
+    // The mirror ray from (8, 0.5, 6) meets the wall at (8, 2.25, 2): it sees the light. From (13, 0.5, 7)
+    // it meets the wall's plane at x = 16.6, well beside the light (x in [4, 12]), and sees nothing.
     const glm::ivec2 hit = pixelOf({8.0f, 0.5f, 6.0f});
-    const glm::ivec2 miss = pixelOf({8.0f, 0.5f, 12.0f});
+    const glm::ivec2 miss = pixelOf({13.0f, 0.5f, 7.0f});
+    for (const glm::ivec2& p : {hit, miss})
+        QVERIFY(p.x >= 0 && p.y >= 0 && p.x < kSize && p.y < kSize);
     const float lit = image.at(hit.x, hit.y).r, dark = image.at(miss.x, miss.y).r;
     qInfo("specular term where the mirror sees the light %.3f, where it does not %.3f", lit, dark);
     // At most Ks * Ke = 2.5, and a clear share of it where the cone meets the emitter head-on.
