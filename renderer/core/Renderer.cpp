@@ -4,6 +4,7 @@
 #include "core/FrameContext.h"
 #include "core/Pipeline.h"
 #include "core/ShaderLibrary.h"
+#include "core/VoxelInspector.h"
 #include "gl/DebugOutput.h"
 #include "passes/CompositePass.h"
 #include "passes/ConeTracePass.h"
@@ -31,6 +32,9 @@ struct Renderer::State {
     ScreenTargets screen;
     ConeSet cones = ConeSet::diffuse(5);
     Aabb gridBounds; ///< empty: fit the scene
+    VoxelInspector inspector;
+    gl::Program presentProgram;
+    gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
 };
 
@@ -87,6 +91,20 @@ std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& 
     std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
     glGetTextureImage(texture.id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
     return data;
+}
+
+struct CameraMatrices {
+    glm::mat4 view;
+    glm::mat4 projection;
+};
+
+CameraMatrices cameraMatrices(const Camera& camera, float aspect, const Aabb& bounds)
+{
+    const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    const float farPlane = glm::length(camera.position - bounds.center()) + 2.0f * sceneRadius;
+    const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
+    return {glm::lookAt(camera.position, camera.lookAt, camera.up),
+        glm::perspective(glm::radians(camera.fovYDeg), aspect, nearPlane, farPlane)};
 }
 
 } // namespace
@@ -197,12 +215,9 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
         camera, glm::mat4(1.0f), glm::mat4(1.0f)};
-    const Aabb bounds = scene.bounds();
-    const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
-    const float farPlane = glm::length(camera.position - bounds.center()) + 2.0f * sceneRadius;
-    const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
-    frame.view = glm::lookAt(camera.position, camera.lookAt, camera.up);
-    frame.projection = glm::perspective(glm::radians(camera.fovYDeg), float(width) / float(height), nearPlane, farPlane);
+    const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
+    frame.view = matrices.view;
+    frame.projection = matrices.projection;
 
     FrameStats stats = st.pipeline->execute(frame);
     stats.voxelBytes = st.voxels.byteSize();
@@ -211,6 +226,63 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     stats.voxelResolution = st.voxels.frame.resolution;
     stats.voxelSize = st.voxels.frame.voxelSize();
     return stats;
+}
+
+void Renderer::present(unsigned framebuffer, int x, int y, int width, int height, float exposure)
+{
+    State& st = *m_state;
+    if (!st.screen.final || width <= 0 || height <= 0)
+        return;
+    if (!st.presentProgram) {
+        st.presentProgram = st.shaders->build({"present", {"common/FullScreen.vert", "present/Present.frag"}, {}});
+        st.emptyVao = gl::VertexArray::create();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(x, y, width, height);
+    glDisable(GL_DEPTH_TEST);
+    st.presentProgram.use();
+    st.presentProgram.set("uExposure", exposure);
+    st.presentProgram.set("uTarget", glm::vec4(float(x), float(y), float(width), float(height)));
+    st.screen.final.bindUnit(0);
+    st.emptyVao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
+{
+    return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
+}
+
+std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer,
+    int x, int y, int width, int height, float exposure)
+{
+    State& st = *m_state;
+    if (width <= 0 || height <= 0)
+        return 0;
+    listVoxels(level, channel);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(x, y, width, height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, width, height);
+    glClearColor(0.16f, 0.16f, 0.18f, 1.0f);
+    glClearDepth(1.0);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), st.scene->scene().bounds());
+    const std::size_t drawn = st.inspector.draw(*st.shaders, matrices.projection * matrices.view, exposure);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    return drawn;
+}
+
+int Renderer::voxelLevelCount() const
+{
+    return m_state->voxels.radiance ? m_state->voxels.radiance.levels() : 0;
 }
 
 RadianceImage Renderer::readFrame() const

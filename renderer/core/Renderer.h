@@ -2,6 +2,7 @@
 
 #include "core/FrameStats.h"
 #include "core/RenderSettings.h"
+#include "core/VoxelChannel.h"
 #include "gl/GlLoader.h"
 #include "image/RadianceImage.h"
 #include "scene/Scene.h"
@@ -48,6 +49,21 @@ public:
     void invalidate();
     /** Renders one frame into the internal HDR target. */
     FrameStats renderFrame(const Camera& camera, int width, int height);
+    /**
+     * Tone-maps the last frame (exposure, filmic curve, sRGB) into the rectangle x, y, width, height (GL
+     * window coordinates, origin bottom left) of a framebuffer: 0 or a widget's framebuffer object.
+     */
+    void present(unsigned framebuffer, int x, int y, int width, int height, float exposure);
+    /** The non-empty voxels of a level in a channel; rebuilt only when they or the request change. */
+    const VoxelListing& listVoxels(int level, VoxelChannel channel);
+    /**
+     * Draws listVoxels(level, channel) as instanced cubes, seen by camera, into a rectangle of a framebuffer
+     * (cleared first); returns the number of cubes drawn.
+     */
+    std::size_t drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer, int x,
+        int y, int width, int height, float exposure);
+    /** Mip levels of the radiance volume (0 before the first frame). */
+    int voxelLevelCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */
     RadianceImage readFrame() const;
     /**
