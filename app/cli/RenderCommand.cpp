@@ -1,6 +1,7 @@
 #include "cli/RenderCommand.h"
 
 #include "document/CameraFile.h"
+#include "document/Document.h"
 #include "imageio/ImageFile.h"
 #include "document/LightsFile.h"
 #include "document/SceneLoader.h"
@@ -44,13 +45,13 @@ int RenderCommand::run(int argc, char** argv)
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Renders a scene with voxel cone tracing, headless.\n"
-        "SCENE is builtin:NAME (cornell, cornell_point, atrium, bunny, default) or a model file Assimp reads\n"
+        "SCENE is a project (.vctproj), builtin:NAME (cornell, cornell_point, atrium, bunny, default) or a model\nfile Assimp reads "
         "(OBJ+MTL, glTF/GLB, PLY, FBX, ...); NAME.lights.json and NAME.camera.json beside a model are read too.\n"
         "Units: point lights W/sr, directional lights W/m^2, emission and output radiance W/(m^2 sr).\n"
         ".png output is tone-mapped sRGB (exposure + filmic curve); .pfm/.exr hold linear radiance.")
         + settingsHelp());
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("builtin:NAME or a model file"));
+    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
     const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (shared/reference format)."), QStringLiteral("cam.json"));
     const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
@@ -70,7 +71,20 @@ int RenderCommand::run(int argc, char** argv)
         return fail(1, QStringLiteral("expected exactly one SCENE argument (see --help)"));
     const QString sceneSpec = positional.front();
 
+    render::Scene scene;
+    QString error;
+    doc::SceneLoadInfo info;
     render::RenderSettings settings;
+    if (sceneSpec.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)) {
+        // A project brings its own settings and camera; --set and --camera still override them.
+        doc::Document project;
+        if (!project.openProject(sceneSpec, &error))
+            return fail(1, error);
+        scene = project.buildRenderScene();
+        settings = project.state().settings;
+    } else if (!doc::SceneLoader::load(sceneSpec, scene, &error, &info)) {
+        return fail(1, error);
+    }
     QStringList assignments = parser.values(setOption);
     if (parser.isSet(voxelOption))
         assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));
@@ -87,11 +101,6 @@ int RenderCommand::run(int argc, char** argv)
     if (!framesOk || frames < 1 || frames > 1000)
         return fail(1, QStringLiteral("--frames must be 1..1000"));
 
-    render::Scene scene;
-    QString error;
-    doc::SceneLoadInfo info;
-    if (!doc::SceneLoader::load(sceneSpec, scene, &error, &info))
-        return fail(1, error);
     if (parser.isSet(lightsOption)) {
         // An explicit lights file replaces the lights of the scene (or of a sibling NAME.lights.json).
         render::Scene lit = scene;

@@ -1,0 +1,451 @@
+#include "Document.h"
+
+#include "ProjectFile.h"
+#include "SceneLoader.h"
+#include "commands/AddLightCommand.h"
+#include "commands/DeleteNodeCommand.h"
+#include "commands/DuplicateNodeCommand.h"
+#include "commands/ImportModelCommand.h"
+#include "commands/RemoveLightCommand.h"
+#include "commands/SetLightCommand.h"
+#include "commands/SetMaterialCommand.h"
+#include "commands/SetNodePropertiesCommand.h"
+#include "commands/SetNodeTransformCommand.h"
+#include "commands/SetRenderSettingsCommand.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QtDebug>
+
+#include <algorithm>
+
+namespace vct::doc {
+
+namespace {
+
+const QString kBuiltinPrefix = QStringLiteral("builtin:");
+
+/** Model paths become absolute so that a project can store them relative to itself; other specs stay. */
+QString normalizedSpec(const QString& spec)
+{
+    if (spec.startsWith(kBuiltinPrefix) || spec.startsWith(QStringLiteral(":/")) || spec.isEmpty())
+        return spec;
+    return QDir::cleanPath(QFileInfo(spec).absoluteFilePath());
+}
+
+/** Splits an RGB emission into a colour with its largest channel 1 and that channel as the intensity. */
+void splitColor(const glm::vec3& value, glm::vec3* color, float* intensity)
+{
+    const float peak = std::max({value.x, value.y, value.z});
+    if (peak > 0.0f) {
+        *color = value / peak;
+        *intensity = peak;
+    } else {
+        *color = glm::vec3(1.0f);
+        *intensity = 0.0f;
+    }
+}
+
+int countLights(const std::vector<LightNode>& lights, LightType type)
+{
+    return int(std::count_if(lights.begin(), lights.end(), [type](const LightNode& l) { return l.type == type; }));
+}
+
+/**
+ * The scene's lights as LightNodes with ids from `nextId` (advanced), named after their type and numbered on
+ * from the lights already in `existing`.
+ */
+std::vector<LightNode> lightsFromScene(
+    const render::Scene& scene, const std::vector<LightNode>& existing, quint64* nextId)
+{
+    std::vector<LightNode> lights;
+    int pointNumber = countLights(existing, LightType::Point);
+    for (const render::PointLight& p : scene.pointLights) {
+        LightNode l;
+        l.id = (*nextId)++;
+        l.name = QStringLiteral("Point light %1").arg(++pointNumber);
+        l.type = LightType::Point;
+        l.position = p.position;
+        splitColor(p.intensity, &l.color, &l.intensity);
+        l.castsShadows = p.castsShadows;
+        lights.push_back(l);
+    }
+    int directionalNumber = countLights(existing, LightType::Directional);
+    for (const render::DirectionalLight& d : scene.directionalLights) {
+        LightNode l;
+        l.id = (*nextId)++;
+        l.name = QStringLiteral("Directional light %1").arg(++directionalNumber);
+        l.type = LightType::Directional;
+        l.direction = d.direction;
+        splitColor(d.irradiance, &l.color, &l.intensity);
+        l.castsShadows = d.castsShadows;
+        lights.push_back(l);
+    }
+    return lights;
+}
+
+/** One node per mesh of `scene`, drawing from `source`, material indices shifted by `materialOffset`. */
+std::vector<SceneNode> nodesFromScene(const render::Scene& scene, int source, int materialOffset, quint64* nextId)
+{
+    std::vector<SceneNode> nodes;
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const render::Mesh& mesh = scene.meshes[i];
+        SceneNode n;
+        n.id = (*nextId)++;
+        n.name = mesh.name.empty() ? QStringLiteral("mesh %1").arg(i + 1) : QString::fromStdString(mesh.name);
+        n.source = source;
+        n.mesh = int(i);
+        n.material = mesh.material + materialOffset;
+        n.dynamic = mesh.dynamic;
+        nodes.push_back(n);
+    }
+    return nodes;
+}
+
+} // namespace
+
+Document::Document(QObject* parent)
+    : QObject(parent)
+{
+}
+
+Document::~Document()
+{
+    // Commands hold a pointer to this document; drop them while it is still whole.
+    m_undoStack.clear();
+}
+
+bool Document::newFromScene(const QString& spec, QString* error)
+{
+    const QString source = normalizedSpec(spec);
+    render::Scene scene;
+    if (!SceneLoader::load(source, scene, error))
+        return false;
+
+    DocumentState state;
+    state.sources.push_back({source});
+    state.nodes = nodesFromScene(scene, 0, 0, &state.nextId);
+    // Source 0's textures come first in the concatenation, so its texture indices stand as they are.
+    state.materials = scene.materials;
+    state.lights = lightsFromScene(scene, {}, &state.nextId);
+    state.camera = scene.camera;
+
+    m_undoStack.clear();
+    m_state = std::move(state);
+    m_geometry.clear();
+    m_geometry.emplace(source, std::move(scene));
+    m_undoStack.setClean();
+    if (!m_filePath.isEmpty()) {
+        m_filePath.clear();
+        emit filePathChanged(m_filePath);
+    }
+    setSelectedNode(-1);
+    notify({ChangeEvent::Kind::Reset, -1});
+    return true;
+}
+
+bool Document::openProject(const QString& path, QString* error)
+{
+    const QString absolutePath = QFileInfo(path).absoluteFilePath();
+    DocumentState state;
+    if (!ProjectFile::load(absolutePath, &state, error))
+        return false;
+
+    const QString name = QDir::toNativeSeparators(absolutePath);
+    auto fail = [&](const QString& field, const QString& problem) {
+        if (error)
+            *error = QStringLiteral("%1: field '%2': %3").arg(name, field, problem);
+        return false;
+    };
+    std::map<QString, render::Scene> geometry;
+    std::size_t textureCount = 0;
+    for (std::size_t i = 0; i < state.sources.size(); ++i) {
+        const QString& spec = state.sources[i].spec;
+        auto it = geometry.find(spec);
+        if (it == geometry.end()) {
+            render::Scene scene;
+            QString problem;
+            if (!SceneLoader::load(spec, scene, &problem))
+                return fail(QStringLiteral("sources[%1].spec").arg(i), problem);
+            it = geometry.emplace(spec, std::move(scene)).first;
+        }
+        textureCount += it->second.textures.size();
+    }
+    // The checks the project file alone cannot make: they need the geometry.
+    for (std::size_t i = 0; i < state.nodes.size(); ++i) {
+        const SceneNode& node = state.nodes[i];
+        const std::size_t meshes = geometry.at(state.sources[std::size_t(node.source)].spec).meshes.size();
+        if (std::size_t(node.mesh) >= meshes)
+            return fail(QStringLiteral("nodes[%1].mesh").arg(i),
+                QStringLiteral("source %1 has %2 meshes, so %3 is out of range").arg(node.source).arg(meshes).arg(node.mesh));
+    }
+    for (std::size_t i = 0; i < state.materials.size(); ++i) {
+        const int texture = state.materials[i].albedoTexture;
+        if (texture >= 0 && std::size_t(texture) >= textureCount)
+            return fail(QStringLiteral("materials[%1].albedo_texture").arg(i),
+                QStringLiteral("the sources have %1 textures, so %2 is out of range").arg(textureCount).arg(texture));
+    }
+
+    m_undoStack.clear();
+    m_state = std::move(state);
+    m_geometry = std::move(geometry);
+    m_undoStack.setClean();
+    m_filePath = absolutePath;
+    emit filePathChanged(m_filePath);
+    setSelectedNode(-1);
+    notify({ChangeEvent::Kind::Reset, -1});
+    return true;
+}
+
+bool Document::saveProject(const QString& path, QString* error)
+{
+    const QString absolutePath = QFileInfo(path).absoluteFilePath();
+    if (!ProjectFile::save(absolutePath, m_state, error))
+        return false;
+    m_undoStack.setClean();
+    m_filePath = absolutePath;
+    emit filePathChanged(m_filePath);
+    return true;
+}
+
+bool Document::importModel(const QString& path, QString* error)
+{
+    const QString spec = normalizedSpec(path);
+    render::Scene scene;
+    if (m_geometry.find(spec) == m_geometry.end() && !SceneLoader::load(spec, scene, error))
+        return false;
+    return addImportedModel(path, std::move(scene));
+}
+
+bool Document::addImportedModel(const QString& path, render::Scene loaded)
+{
+    const QString spec = normalizedSpec(path);
+    // A model already imported keeps its cached geometry: nodes of the earlier source index into it.
+    auto it = m_geometry.find(spec);
+    if (it == m_geometry.end())
+        it = m_geometry.emplace(spec, std::move(loaded)).first;
+    const render::Scene& scene = it->second;
+
+    // Texture indices of the new materials point past the textures of every existing source, matching the
+    // concatenation in buildRenderScene().
+    std::size_t textureBase = 0;
+    for (std::size_t i = 0; i < m_state.sources.size(); ++i)
+        textureBase += sourceScene(int(i)).textures.size();
+    std::vector<render::Material> materials = scene.materials;
+    for (render::Material& m : materials)
+        if (m.albedoTexture >= 0)
+            m.albedoTexture += int(textureBase);
+
+    quint64 nextId = m_state.nextId;
+    std::vector<SceneNode> nodes
+        = nodesFromScene(scene, int(m_state.sources.size()), int(m_state.materials.size()), &nextId);
+    std::vector<LightNode> lights = lightsFromScene(scene, m_state.lights, &nextId);
+    m_undoStack.push(new ImportModelCommand(this, {spec}, std::move(materials), std::move(nodes), std::move(lights), nextId));
+    return true;
+}
+
+void Document::setNodeTransform(int node, const NodeTransform& transform)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].transform == transform)
+        return;
+    m_undoStack.push(new SetNodeTransformCommand(this, node, transform));
+}
+
+void Document::setNodeName(int node, const QString& name)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].name == name)
+        return;
+    auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
+    properties.name = name;
+    m_undoStack.push(new SetNodePropertiesCommand(this, node, properties));
+}
+
+void Document::setNodeVisible(int node, bool visible)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].visible == visible)
+        return;
+    auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
+    properties.visible = visible;
+    m_undoStack.push(new SetNodePropertiesCommand(this, node, properties));
+}
+
+void Document::setNodeDynamic(int node, bool dynamic)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].dynamic == dynamic)
+        return;
+    auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
+    properties.dynamic = dynamic;
+    m_undoStack.push(new SetNodePropertiesCommand(this, node, properties));
+}
+
+void Document::duplicateNode(int node)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size())
+        return;
+    m_undoStack.push(new DuplicateNodeCommand(this, node));
+}
+
+void Document::deleteNode(int node)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size())
+        return;
+    m_undoStack.push(new DeleteNodeCommand(this, node));
+}
+
+void Document::setMaterial(int index, const render::Material& material)
+{
+    if (index < 0 || std::size_t(index) >= m_state.materials.size()
+        || sameMaterial(m_state.materials[std::size_t(index)], material))
+        return;
+    m_undoStack.push(new SetMaterialCommand(this, index, material));
+}
+
+void Document::setLight(int index, const LightNode& light)
+{
+    if (index < 0 || std::size_t(index) >= m_state.lights.size())
+        return;
+    LightNode edited = light;
+    edited.id = m_state.lights[std::size_t(index)].id;
+    if (edited == m_state.lights[std::size_t(index)])
+        return;
+    m_undoStack.push(new SetLightCommand(this, index, edited));
+}
+
+void Document::addLight(const LightNode& light)
+{
+    LightNode added = light;
+    if (added.name.isEmpty()) {
+        const bool point = added.type == LightType::Point;
+        added.name = QStringLiteral("%1 light %2")
+                         .arg(point ? QStringLiteral("Point") : QStringLiteral("Directional"))
+                         .arg(countLights(m_state.lights, added.type) + 1);
+    }
+    m_undoStack.push(new AddLightCommand(this, added));
+}
+
+void Document::removeLight(int index)
+{
+    if (index < 0 || std::size_t(index) >= m_state.lights.size())
+        return;
+    m_undoStack.push(new RemoveLightCommand(this, index));
+}
+
+void Document::setSettings(const render::RenderSettings& settings)
+{
+    if (sameSettings(m_state.settings, settings))
+        return;
+    if (const std::string problem = settings.validate(); !problem.empty()) {
+        qWarning("Document::setSettings: ignoring invalid settings: %s", problem.c_str());
+        return;
+    }
+    m_undoStack.push(new SetRenderSettingsCommand(this, settings));
+}
+
+void Document::setCamera(const render::Camera& camera)
+{
+    if (sameCamera(m_state.camera, camera))
+        return;
+    m_state.camera = camera;
+    notify({ChangeEvent::Kind::Camera, -1});
+}
+
+void Document::setSelectedNode(int node)
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size())
+        node = -1;
+    if (node == m_selectedNode)
+        return;
+    m_selectedNode = node;
+    emit selectionChanged(node);
+}
+
+quint64 Document::selectedNodeId() const
+{
+    if (m_selectedNode < 0 || std::size_t(m_selectedNode) >= m_state.nodes.size())
+        return 0;
+    return m_state.nodes[std::size_t(m_selectedNode)].id;
+}
+
+void Document::selectNodeById(quint64 id)
+{
+    setSelectedNode(id == 0 ? -1 : nodeIndex(id));
+}
+
+int Document::nodeIndex(quint64 id) const
+{
+    const auto it = std::find_if(
+        m_state.nodes.begin(), m_state.nodes.end(), [id](const SceneNode& n) { return n.id == id; });
+    return it == m_state.nodes.end() ? -1 : int(it - m_state.nodes.begin());
+}
+
+int Document::lightIndex(quint64 id) const
+{
+    const auto it = std::find_if(
+        m_state.lights.begin(), m_state.lights.end(), [id](const LightNode& l) { return l.id == id; });
+    return it == m_state.lights.end() ? -1 : int(it - m_state.lights.begin());
+}
+
+render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
+{
+    render::Scene scene;
+    if (meshToNode)
+        meshToNode->clear();
+    // Texture indices in the document's materials index the textures of all sources in source order (see
+    // importModel), so the concatenation is the whole remapping.
+    for (std::size_t i = 0; i < m_state.sources.size(); ++i) {
+        const auto& textures = sourceScene(int(i)).textures;
+        scene.textures.insert(scene.textures.end(), textures.begin(), textures.end());
+    }
+    scene.materials = m_state.materials;
+    for (std::size_t i = 0; i < m_state.nodes.size(); ++i) {
+        const SceneNode& node = m_state.nodes[i];
+        if (!node.visible)
+            continue;
+        const render::Scene& source = sourceScene(node.source);
+        if (node.mesh < 0 || std::size_t(node.mesh) >= source.meshes.size())
+            continue;
+        render::Mesh mesh = source.meshes[std::size_t(node.mesh)];
+        mesh.transform = node.transform.matrix() * mesh.transform;
+        mesh.material = node.material;
+        mesh.dynamic = node.dynamic;
+        scene.meshes.push_back(std::move(mesh));
+        if (meshToNode)
+            meshToNode->push_back(int(i));
+    }
+    for (const LightNode& light : m_state.lights) {
+        if (light.type == LightType::Point)
+            scene.pointLights.push_back({light.position, light.color * light.intensity, light.castsShadows});
+        else
+            scene.directionalLights.push_back({light.direction, light.color * light.intensity, light.castsShadows});
+    }
+    scene.camera = m_state.camera;
+    return scene;
+}
+
+glm::mat4 Document::nodeWorldTransform(int node) const
+{
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size())
+        return glm::mat4(1.0f);
+    const SceneNode& n = m_state.nodes[std::size_t(node)];
+    const render::Scene& source = sourceScene(n.source);
+    const glm::mat4 imported = n.mesh >= 0 && std::size_t(n.mesh) < source.meshes.size()
+        ? source.meshes[std::size_t(n.mesh)].transform
+        : glm::mat4(1.0f);
+    return n.transform.matrix() * imported;
+}
+
+const render::Scene& Document::sourceScene(int source) const
+{
+    static const render::Scene kEmpty;
+    if (source < 0 || std::size_t(source) >= m_state.sources.size())
+        return kEmpty;
+    const auto it = m_geometry.find(m_state.sources[std::size_t(source)].spec);
+    return it == m_geometry.end() ? kEmpty : it->second;
+}
+
+void Document::notify(const ChangeEvent& event)
+{
+    emit changed(event);
+}
+
+} // namespace vct::doc

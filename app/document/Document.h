@@ -1,0 +1,103 @@
+#pragma once
+
+#include "ChangeEvent.h"
+#include "DocumentState.h"
+
+#include "scene/Scene.h"
+
+#include <QObject>
+#include <QUndoStack>
+
+#include <map>
+#include <vector>
+
+namespace vct::doc {
+
+/**
+ * The open document: plain state plus the undo stack. Every edit goes through a QUndoCommand; the
+ * `set...` helpers push one (slider drags merge into one step). Views and SceneSync listen to `changed`.
+ * Knows nothing about GL or widgets.
+ */
+class Document : public QObject {
+    Q_OBJECT
+
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    const DocumentState& state() const { return m_state; }
+    QUndoStack* undoStack() { return &m_undoStack; }
+
+    /** Starts a new untitled document from a scene spec (builtin:NAME or a model path). Clears undo. */
+    bool newFromScene(const QString& spec, QString* error);
+    /** Opens a .vctproj. On failure the open document is untouched and `error` names the file and problem. */
+    bool openProject(const QString& path, QString* error);
+    /** Saves atomically; a failure leaves any old file whole. On success the document becomes clean. */
+    bool saveProject(const QString& path, QString* error);
+    /** Adds a model's meshes, materials and lights as one undoable step. */
+    bool importModel(const QString& path, QString* error);
+    /**
+     * The second half of importModel, for a model already loaded with SceneLoader (on a worker thread, so
+     * the UI stays responsive): adds it as one undoable step.
+     */
+    bool addImportedModel(const QString& path, render::Scene loaded);
+
+    QString filePath() const { return m_filePath; }
+    bool isModified() const { return !m_undoStack.isClean(); }
+
+    // Edits: each pushes one undo command.
+    void setNodeTransform(int node, const NodeTransform& transform);
+    void setNodeName(int node, const QString& name);
+    void setNodeVisible(int node, bool visible);
+    void setNodeDynamic(int node, bool dynamic);
+    void duplicateNode(int node);
+    void deleteNode(int node);
+    void setMaterial(int index, const render::Material& material);
+    void setLight(int index, const LightNode& light);
+    void addLight(const LightNode& light);
+    void removeLight(int index);
+    void setSettings(const render::RenderSettings& settings);
+    /** Not undoable: moving the view is not an edit (as in Blender and Godot); saved with the project. */
+    void setCamera(const render::Camera& camera);
+
+    /** Current selection (a node index or -1); not part of undo. */
+    int selectedNode() const { return m_selectedNode; }
+    void setSelectedNode(int node);
+    /** The selected node's id, or 0 when nothing is selected. */
+    quint64 selectedNodeId() const;
+    /** Selects the node with this id, or nothing (-1) when no node has it. */
+    void selectNodeById(quint64 id);
+
+    /** Index of the node with this id, or -1. */
+    int nodeIndex(quint64 id) const;
+    /** Index of the light with this id, or -1. */
+    int lightIndex(quint64 id) const;
+
+    /**
+     * The scene the renderer draws: visible nodes only, each mesh transformed by its node. meshToNode, if
+     * given, receives for each renderer mesh the node index it came from.
+     */
+    render::Scene buildRenderScene(std::vector<int>* meshToNode = nullptr) const;
+    /** World transform of a node's mesh (node transform times the imported one). */
+    glm::mat4 nodeWorldTransform(int node) const;
+    /** The imported geometry of a source (cached when the source was loaded). */
+    const render::Scene& sourceScene(int source) const;
+
+    /** For undo commands: replace part of the state and announce it. Not for views. */
+    DocumentState& mutableState() { return m_state; }
+    void notify(const ChangeEvent& event);
+
+signals:
+    void changed(const vct::doc::ChangeEvent& event);
+    void selectionChanged(int node);
+    void filePathChanged(const QString& path);
+
+private:
+    DocumentState m_state;
+    std::map<QString, render::Scene> m_geometry; ///< Imported scenes by source spec.
+    QUndoStack m_undoStack;
+    QString m_filePath;
+    int m_selectedNode = -1;
+};
+
+} // namespace vct::doc

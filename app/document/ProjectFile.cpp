@@ -1,0 +1,471 @@
+#include "ProjectFile.h"
+
+#include "JsonFieldReader.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <set>
+
+namespace vct::doc {
+
+namespace {
+
+const QString kBuiltinPrefix = QStringLiteral("builtin:");
+const QString kResourcePrefix = QStringLiteral(":/");
+constexpr double kMaxId = 9007199254740992.0; // 2^53: the largest integer a JSON double holds exactly.
+
+bool isModelPath(const QString& spec)
+{
+    return !spec.startsWith(kBuiltinPrefix) && !spec.startsWith(kResourcePrefix);
+}
+
+QJsonArray toArray(const glm::vec3& v)
+{
+    return QJsonArray{double(v.x), double(v.y), double(v.z)};
+}
+
+QString lightTypeName(LightType type)
+{
+    return type == LightType::Directional ? QStringLiteral("directional") : QStringLiteral("point");
+}
+
+/** Deepest nesting of arrays and objects, stopping early once it passes `limit` (no recursion, no parse). */
+int nestingDepth(const QByteArray& bytes, int limit)
+{
+    int depth = 0;
+    int deepest = 0;
+    bool inString = false;
+    bool escaped = false;
+    for (const char c : bytes) {
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+            continue;
+        }
+        if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+            if (deepest > limit)
+                break;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+/** JsonFieldReader plus the shapes this format needs: arrays, objects, ids and float-range vectors. */
+class ProjectReader : public JsonFieldReader {
+public:
+    using JsonFieldReader::JsonFieldReader;
+
+    bool readArray(const QJsonObject& object, const QString& key, const QString& fieldPath, int maxSize,
+        QJsonArray* value)
+    {
+        const QJsonValue v = object.value(key);
+        if (!v.isArray())
+            return fail(fieldPath, QStringLiteral("expected an array, found %1").arg(describe(v)));
+        const QJsonArray array = v.toArray();
+        if (array.size() > maxSize)
+            return fail(fieldPath,
+                QStringLiteral("has %1 entries; more than %2 are refused").arg(array.size()).arg(maxSize));
+        *value = array;
+        return true;
+    }
+
+    bool readObject(const QJsonValue& v, const QString& fieldPath, QJsonObject* value)
+    {
+        if (!v.isObject())
+            return fail(fieldPath, QStringLiteral("expected an object, found %1").arg(describe(v)));
+        *value = v.toObject();
+        return true;
+    }
+
+    bool readId(const QJsonObject& object, const QString& key, const QString& fieldPath, quint64* value)
+    {
+        double d = 0.0;
+        if (!readNumber(object, key, fieldPath, &d))
+            return false;
+        if (d != std::floor(d) || d < 1.0 || d > kMaxId)
+            return fail(fieldPath, QStringLiteral("expected an integer id from 1 to 2^53, found %1").arg(d));
+        *value = quint64(d);
+        return true;
+    }
+
+    bool readFloat(const QJsonObject& object, const QString& key, const QString& fieldPath, float minimum,
+        float* value)
+    {
+        double d = 0.0;
+        if (!readNumber(object, key, fieldPath, &d))
+            return false;
+        if (!std::isfinite(float(d)))
+            return fail(fieldPath, QStringLiteral("%1 is too large").arg(d));
+        if (float(d) < minimum)
+            return fail(fieldPath, QStringLiteral("must be %1 or more, found %2").arg(minimum).arg(d));
+        *value = float(d);
+        return true;
+    }
+
+    bool readFiniteVec3(const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
+    {
+        glm::vec3 v(0.0f);
+        if (!readVec3(object, key, fieldPath, &v))
+            return false;
+        // The JSON numbers are finite doubles, but may still overflow a float.
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+            return fail(fieldPath, QStringLiteral("a value is too large"));
+        *value = v;
+        return true;
+    }
+
+    static QString describe(const QJsonValue& v)
+    {
+        switch (v.type()) {
+        case QJsonValue::Null: return QStringLiteral("null");
+        case QJsonValue::Bool: return QStringLiteral("a boolean");
+        case QJsonValue::Double: return QStringLiteral("a number");
+        case QJsonValue::String: return QStringLiteral("a string");
+        case QJsonValue::Array: return QStringLiteral("an array");
+        case QJsonValue::Object: return QStringLiteral("an object");
+        case QJsonValue::Undefined: break;
+        }
+        return QStringLiteral("nothing (missing)");
+    }
+};
+
+bool readSources(ProjectReader& r, const QJsonObject& root, const QString& projectDir, DocumentState& out)
+{
+    QJsonArray array;
+    if (!r.readArray(root, QStringLiteral("sources"), QStringLiteral("sources"), ProjectFile::kMaxSources, &array))
+        return false;
+    const QDir dir(projectDir);
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("sources[%1]").arg(i);
+        QJsonObject object;
+        QString spec;
+        if (!r.readObject(array[i], path, &object)
+            || !r.readString(object, QStringLiteral("spec"), path + QStringLiteral(".spec"), &spec))
+            return false;
+        if (spec.isEmpty())
+            return r.fail(path + QStringLiteral(".spec"), QStringLiteral("is empty"));
+        if (isModelPath(spec)) {
+            spec = QDir::cleanPath(dir.absoluteFilePath(spec));
+            if (!QFileInfo(spec).isFile())
+                return r.fail(path + QStringLiteral(".spec"),
+                    QStringLiteral("model file '%1' not found").arg(QDir::toNativeSeparators(spec)));
+        }
+        out.sources.push_back({spec});
+    }
+    return true;
+}
+
+bool readMaterials(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonArray array;
+    if (!r.readArray(root, QStringLiteral("materials"), QStringLiteral("materials"), ProjectFile::kMaxNodes, &array))
+        return false;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("materials[%1].").arg(i);
+        QJsonObject o;
+        QString name;
+        render::Material m;
+        if (!r.readObject(array[i], path.chopped(1), &o) || !r.readString(o, "name", path + "name", &name)
+            || !r.readFiniteVec3(o, "albedo", path + "albedo", &m.albedo)
+            || !r.readFiniteVec3(o, "emission", path + "emission", &m.emission)
+            || !r.readFiniteVec3(o, "specular", path + "specular", &m.specular)
+            || !r.readFloat(o, "shininess", path + "shininess", 0.0f, &m.shininess)
+            || !r.readInt(o, "albedo_texture", path + "albedo_texture", -1, INT_MAX, &m.albedoTexture))
+            return false;
+        m.name = name.toStdString();
+        out.materials.push_back(m);
+    }
+    return true;
+}
+
+bool readNodes(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonArray array;
+    if (!r.readArray(root, QStringLiteral("nodes"), QStringLiteral("nodes"), ProjectFile::kMaxNodes, &array))
+        return false;
+    const int lastSource = int(out.sources.size()) - 1;
+    const int lastMaterial = int(out.materials.size()) - 1;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("nodes[%1].").arg(i);
+        QJsonObject o;
+        SceneNode n;
+        if (!r.readObject(array[i], path.chopped(1), &o) || !r.readId(o, "id", path + "id", &n.id)
+            || !r.readString(o, "name", path + "name", &n.name)
+            || !r.readInt(o, "source", path + "source", 0, lastSource, &n.source)
+            || !r.readInt(o, "mesh", path + "mesh", 0, INT_MAX, &n.mesh)
+            || !r.readInt(o, "material", path + "material", 0, lastMaterial, &n.material)
+            || !r.readFiniteVec3(o, "translation", path + "translation", &n.transform.translation)
+            || !r.readFiniteVec3(o, "rotation_deg", path + "rotation_deg", &n.transform.rotationDeg)
+            || !r.readFiniteVec3(o, "scale", path + "scale", &n.transform.scale)
+            || !r.readBool(o, "dynamic", path + "dynamic", &n.dynamic)
+            || !r.readBool(o, "visible", path + "visible", &n.visible))
+            return false;
+        out.nodes.push_back(n);
+    }
+    return true;
+}
+
+bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonArray array;
+    if (!r.readArray(root, QStringLiteral("lights"), QStringLiteral("lights"), ProjectFile::kMaxNodes, &array))
+        return false;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("lights[%1].").arg(i);
+        QJsonObject o;
+        QString type;
+        LightNode l;
+        if (!r.readObject(array[i], path.chopped(1), &o) || !r.readId(o, "id", path + "id", &l.id)
+            || !r.readString(o, "name", path + "name", &l.name) || !r.readString(o, "type", path + "type", &type))
+            return false;
+        if (type == QStringLiteral("point"))
+            l.type = LightType::Point;
+        else if (type == QStringLiteral("directional"))
+            l.type = LightType::Directional;
+        else
+            return r.fail(path + "type", QStringLiteral("expected \"point\" or \"directional\", found \"%1\"").arg(type));
+        if (!r.readFiniteVec3(o, "position", path + "position", &l.position)
+            || !r.readFiniteVec3(o, "direction", path + "direction", &l.direction)
+            || !r.readFiniteVec3(o, "color", path + "color", &l.color)
+            || !r.readFloat(o, "intensity", path + "intensity", 0.0f, &l.intensity)
+            || !r.readBool(o, "shadows", path + "shadows", &l.castsShadows))
+            return false;
+        out.lights.push_back(l);
+    }
+    return true;
+}
+
+bool readCamera(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonObject o;
+    render::Camera c;
+    if (!r.readObject(root.value("camera"), "camera", &o) || !r.readFiniteVec3(o, "position", "camera.position", &c.position)
+        || !r.readFiniteVec3(o, "look_at", "camera.look_at", &c.lookAt)
+        || !r.readFiniteVec3(o, "up", "camera.up", &c.up) || !r.readFloat(o, "fov_y_deg", "camera.fov_y_deg", 0.0f, &c.fovYDeg))
+        return false;
+    if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f))
+        return r.fail("camera.fov_y_deg", QStringLiteral("must be between 0 and 180 degrees, found %1").arg(c.fovYDeg));
+    // Optional: hand-written projects may leave the near plane at its default.
+    if (r.hasField(o, "near_plane")) {
+        if (!r.readFloat(o, "near_plane", "camera.near_plane", 0.0f, &c.nearPlane))
+            return false;
+        if (!(c.nearPlane > 0.0f))
+            return r.fail("camera.near_plane", QStringLiteral("must be greater than 0"));
+    }
+    out.camera = c;
+    return true;
+}
+
+bool readSettings(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonObject o;
+    if (!r.readObject(root.value("settings"), "settings", &o))
+        return false;
+    render::RenderSettings settings;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString path = QStringLiteral("settings.%1").arg(it.key());
+        if (!it.value().isString())
+            return r.fail(path, QStringLiteral("expected the value as a string, found %1").arg(ProjectReader::describe(it.value())));
+        const std::string problem = settings.set(it.key().toStdString(), it.value().toString().toStdString());
+        if (!problem.empty())
+            return r.fail(path, QString::fromStdString(problem));
+    }
+    out.settings = settings;
+    return true;
+}
+
+bool readIds(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    if (!r.readId(root, "next_id", "next_id", &out.nextId))
+        return false;
+    std::set<quint64> seen;
+    auto check = [&](quint64 id, const QString& path) {
+        if (!seen.insert(id).second)
+            return r.fail(path, QStringLiteral("id %1 is used twice").arg(id));
+        if (id >= out.nextId)
+            return r.fail(QStringLiteral("next_id"),
+                QStringLiteral("must be greater than every id, but %1 is %2").arg(path).arg(id));
+        return true;
+    };
+    for (std::size_t i = 0; i < out.nodes.size(); ++i)
+        if (!check(out.nodes[i].id, QStringLiteral("nodes[%1].id").arg(i)))
+            return false;
+    for (std::size_t i = 0; i < out.lights.size(); ++i)
+        if (!check(out.lights[i].id, QStringLiteral("lights[%1].id").arg(i)))
+            return false;
+    return true;
+}
+
+} // namespace
+
+QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projectDir)
+{
+    const QDir dir(projectDir);
+    QJsonArray sources;
+    for (const SceneSource& source : state.sources) {
+        const QString spec = isModelPath(source.spec) ? dir.relativeFilePath(source.spec) : source.spec;
+        sources.append(QJsonObject{{"spec", spec}});
+    }
+    QJsonArray materials;
+    for (const render::Material& m : state.materials)
+        materials.append(QJsonObject{{"name", QString::fromStdString(m.name)}, {"albedo", toArray(m.albedo)},
+            {"emission", toArray(m.emission)}, {"specular", toArray(m.specular)}, {"shininess", double(m.shininess)},
+            {"albedo_texture", m.albedoTexture}});
+    QJsonArray nodes;
+    for (const SceneNode& n : state.nodes)
+        nodes.append(QJsonObject{{"id", qint64(n.id)}, {"name", n.name}, {"source", n.source}, {"mesh", n.mesh},
+            {"material", n.material}, {"translation", toArray(n.transform.translation)},
+            {"rotation_deg", toArray(n.transform.rotationDeg)}, {"scale", toArray(n.transform.scale)},
+            {"dynamic", n.dynamic}, {"visible", n.visible}});
+    QJsonArray lights;
+    for (const LightNode& l : state.lights)
+        lights.append(QJsonObject{{"id", qint64(l.id)}, {"name", l.name}, {"type", lightTypeName(l.type)},
+            {"position", toArray(l.position)}, {"direction", toArray(l.direction)}, {"color", toArray(l.color)},
+            {"intensity", double(l.intensity)}, {"shadows", l.castsShadows}});
+    const render::Camera& c = state.camera;
+    const QJsonObject camera{{"position", toArray(c.position)}, {"look_at", toArray(c.lookAt)},
+        {"up", toArray(c.up)}, {"fov_y_deg", double(c.fovYDeg)}, {"near_plane", double(c.nearPlane)}};
+    QJsonObject settings;
+    for (const auto& row : state.settings.describe())
+        settings.insert(QString::fromStdString(row[0]), QString::fromStdString(row[1]));
+
+    const QJsonObject root{{"format", QString::fromLatin1(kFormat)}, {"version", kVersion}, {"sources", sources},
+        {"materials", materials}, {"nodes", nodes}, {"lights", lights}, {"camera", camera}, {"settings", settings},
+        {"next_id", qint64(state.nextId)}};
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, const QString& fileName,
+    DocumentState* state, QString* error)
+{
+    ProjectReader r(fileName);
+    auto failed = [&] {
+        if (error)
+            *error = r.error();
+        return false;
+    };
+    auto fail = [&](const QString& fieldPath, const QString& problem) {
+        r.fail(fieldPath, problem);
+        return failed();
+    };
+    if (!json.isValidUtf8())
+        return fail(QString(), QStringLiteral("is not valid UTF-8 text"));
+    if (nestingDepth(json, kMaxNesting) > kMaxNesting)
+        return fail(QString(), QStringLiteral("arrays or objects nest deeper than %1 levels").arg(kMaxNesting));
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError)
+        return fail(QString(),
+            QStringLiteral("invalid JSON at offset %1: %2").arg(parseError.offset).arg(parseError.errorString()));
+    if (!document.isObject())
+        return fail(QString(), QStringLiteral("expected a JSON object at the top level"));
+    const QJsonObject root = document.object();
+
+    QString format;
+    if (!r.readString(root, "format", "format", &format))
+        return failed();
+    if (format != QLatin1String(kFormat))
+        return fail("format",
+            QStringLiteral("expected \"%1\", found \"%2\": not a VCT Studio project").arg(QLatin1String(kFormat), format));
+    int version = 0;
+    if (!r.readInt(root, "version", "version", 1, INT_MAX, &version))
+        return failed();
+    // Checked before anything else: a newer file may be laid out differently.
+    if (version > kVersion)
+        return fail("version",
+            QStringLiteral("was saved by a newer VCT Studio (version %1); this one reads version %2")
+                .arg(version)
+                .arg(kVersion));
+
+    DocumentState result;
+    if (!readSources(r, root, projectDir, result) || !readMaterials(r, root, result) || !readNodes(r, root, result)
+        || !readLights(r, root, result) || !readCamera(r, root, result) || !readSettings(r, root, result)
+        || !readIds(r, root, result))
+        return failed();
+    *state = std::move(result);
+    return true;
+}
+
+bool ProjectFile::load(const QString& path, DocumentState* state, QString* error)
+{
+    const QString name = QDir::toNativeSeparators(path);
+    auto fail = [&](const QString& problem) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(name, problem);
+        return false;
+    };
+    const QFileInfo info(path);
+    if (!info.exists())
+        return fail(QStringLiteral("file not found"));
+    if (info.isDir())
+        return fail(QStringLiteral("is a folder, not a project file"));
+    if (info.size() > kMaxFileBytes)
+        return fail(QStringLiteral("is %1 bytes; project files over %2 MiB are refused")
+                        .arg(info.size())
+                        .arg(kMaxFileBytes / (1024 * 1024)));
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("cannot open: %1").arg(file.errorString()));
+    // Bounded read: the size above may not be the whole story (a file growing, a special file).
+    const QByteArray bytes = file.read(kMaxFileBytes + 1);
+    if (file.error() != QFileDevice::NoError)
+        return fail(QStringLiteral("cannot read: %1").arg(file.errorString()));
+    if (bytes.size() > kMaxFileBytes)
+        return fail(QStringLiteral("is larger than %1 MiB; refused").arg(kMaxFileBytes / (1024 * 1024)));
+    return fromJson(bytes, info.absolutePath(), name, state, error);
+}
+
+bool ProjectFile::save(const QString& path, const DocumentState& state, QString* error)
+{
+    const QString name = QDir::toNativeSeparators(path);
+    auto fail = [&](const QString& problem) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(name, problem);
+        return false;
+    };
+    const QFileInfo info(path);
+    if (!info.absoluteDir().exists())
+        return fail(QStringLiteral("cannot save: the folder %1 does not exist")
+                        .arg(QDir::toNativeSeparators(info.absolutePath())));
+    if (info.isDir())
+        return fail(QStringLiteral("cannot save: a folder of that name is in the way"));
+    const QByteArray bytes = toJson(state, info.absolutePath());
+    QSaveFile file(path);
+    errno = 0;
+    if (!file.open(QIODevice::WriteOnly))
+        return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));
+    // Qt 6.4's commit() ignores a failed final flush (a full disk, a file size limit) and would rename a
+    // truncated file over the old one, so the flush is checked here first.
+    if (file.write(bytes) != bytes.size() || !file.flush()) {
+        // A short write leaves Qt without a message of its own; errno still holds the failed write's reason.
+        const int osError = errno;
+        const QString reason = osError != 0 ? qt_error_string(osError) : file.errorString();
+        file.cancelWriting();
+        return fail(QStringLiteral("cannot save: writing failed (%1); any old file is unchanged").arg(reason));
+    }
+    if (!file.commit())
+        return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));
+    return true;
+}
+
+} // namespace vct::doc

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "DocumentState.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace vct::doc {
+
+/**
+ * The project file (*.vctproj): versioned JSON holding a DocumentState.
+ *
+ * `{"format": "vct-studio-project", "version": 1, "sources": [...], "nodes": [...], "materials": [...],
+ *   "lights": [...], "camera": {...}, "settings": {"voxel_res": "128", ...}, "next_id": N}`
+ *
+ * - sources: `builtin:NAME` as is; model paths relative to the project file's directory (so a project and
+ *   its models move together), resolved to absolute paths on load.
+ * - nodes: id, name, source, mesh, material, translation (metres), rotation_deg (XYZ Euler, degrees), scale,
+ *   dynamic, visible.
+ * - materials: name, albedo, emission (W/(m^2 sr)), specular, shininess, albedo_texture (index into the
+ *   textures of all sources concatenated in source order, or -1).
+ * - lights: id, name, type (point|directional), position (m), direction, color, intensity (W/sr or W/m^2),
+ *   shadows.
+ * - camera: position, look_at, up, fov_y_deg, near_plane (m).
+ * - settings: every RenderSettings key with its value as text, read back through RenderSettings::set.
+ *
+ * Loading validates everything and reports the first problem naming the file and the field. Index checks
+ * that need the geometry (a node's mesh, a material's texture) are left to the caller (Document).
+ */
+class ProjectFile {
+public:
+    static constexpr const char* kFormat = "vct-studio-project";
+    static constexpr int kVersion = 1;
+    static constexpr qint64 kMaxFileBytes = 64ll * 1024 * 1024; ///< Larger files are refused unread.
+    static constexpr int kMaxNodes = 1000000;                    ///< Also the cap for lights and materials.
+    static constexpr int kMaxSources = 100000;
+    static constexpr int kMaxNesting = 64; ///< Deepest [ and { nesting accepted (the format needs 4).
+
+    /**
+     * Reads the project at `path` into `state`. On failure returns false, leaves `state` unchanged and writes a
+     * message naming the file and the field to `error`. Model files the sources name must exist.
+     */
+    static bool load(const QString& path, DocumentState* state, QString* error);
+    /**
+     * Writes `state` to `path` atomically (QSaveFile): on failure returns false, any old file there is left
+     * byte-identical, and `error` names the file and the reason.
+     */
+    static bool save(const QString& path, const DocumentState& state, QString* error);
+
+    /** The file's bytes for `state`, model paths made relative to `projectDir`. */
+    static QByteArray toJson(const DocumentState& state, const QString& projectDir);
+    /**
+     * Parses file bytes (as load() does after reading): relative model paths resolve against `projectDir`;
+     * `fileName` is used in messages only.
+     */
+    static bool fromJson(const QByteArray& json, const QString& projectDir, const QString& fileName,
+        DocumentState* state, QString* error);
+};
+
+} // namespace vct::doc

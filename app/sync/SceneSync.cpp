@@ -1,0 +1,82 @@
+#include "sync/SceneSync.h"
+
+#include "core/Renderer.h"
+#include "document/Document.h"
+
+namespace vct::sync {
+
+namespace {
+
+void applyLights(const doc::DocumentState& state, render::Renderer& renderer)
+{
+    std::vector<render::PointLight> points;
+    std::vector<render::DirectionalLight> directionals;
+    for (const doc::LightNode& light : state.lights) {
+        const glm::vec3 value = light.color * light.intensity;
+        if (light.type == doc::LightType::Point)
+            points.push_back({light.position, value, light.castsShadows});
+        else
+            directionals.push_back({light.direction, value, light.castsShadows});
+    }
+    renderer.setLights(points, directionals);
+}
+
+} // namespace
+
+SceneSync::SceneSync(doc::Document* document, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
+{
+    connect(document, &doc::Document::changed, this, &SceneSync::onChanged);
+}
+
+void SceneSync::onChanged(const doc::ChangeEvent& event)
+{
+    using Kind = doc::ChangeEvent::Kind;
+    if (event.kind == Kind::Reset || event.kind == Kind::Structure)
+        m_needsReset = true;
+    else if (event.kind != Kind::Camera) // the camera is read every frame
+        m_pending.push_back(event);
+}
+
+void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
+{
+    using Kind = doc::ChangeEvent::Kind;
+    const doc::DocumentState& state = m_document->state();
+    if (m_needsReset || fullRebuild) {
+        renderer.setSettings(state.settings);
+        renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+        m_needsReset = false;
+        m_pending.clear();
+        return;
+    }
+    bool lights = false, settings = false;
+    std::vector<int> materials, nodes;
+    for (const doc::ChangeEvent& event : m_pending) {
+        switch (event.kind) {
+        case Kind::Lights: lights = true; break;
+        case Kind::Settings: settings = true; break;
+        case Kind::Material: materials.push_back(event.index); break;
+        case Kind::NodeTransform: nodes.push_back(event.index); break;
+        case Kind::NodeProperty:
+            // The dynamic flag decides which voxel layer a mesh lives in: rebuild the scene.
+            renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+            break;
+        default: break;
+        }
+    }
+    m_pending.clear();
+    if (settings)
+        renderer.setSettings(state.settings);
+    if (lights)
+        applyLights(state, renderer);
+    for (int index : materials)
+        if (index >= 0 && std::size_t(index) < state.materials.size())
+            renderer.setMaterial(std::size_t(index), state.materials[std::size_t(index)]);
+    for (int node : nodes)
+        for (std::size_t mesh = 0; mesh < m_meshToNode.size(); ++mesh)
+            if (m_meshToNode[mesh] == node)
+                renderer.setMeshTransform(mesh, m_document->nodeWorldTransform(node));
+}
+
+} // namespace vct::sync

@@ -1,0 +1,420 @@
+#include "TestSupport.h"
+
+#include "ui/LightDock.h"
+#include "ui/MaterialDock.h"
+#include "ui/RenderSettingsDock.h"
+#include "ui/SceneGraphDock.h"
+#include "ui/SceneTreeModel.h"
+#include "ui/StatsDock.h"
+
+#include "core/FrameStats.h"
+#include "document/Document.h"
+
+#include <QAbstractItemModelTester>
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+#include <QTreeView>
+
+#include <memory>
+
+using namespace vct;
+
+namespace {
+
+std::unique_ptr<doc::Document> openCornell()
+{
+    auto document = std::make_unique<doc::Document>();
+    QString error;
+    if (!document->newFromScene(QStringLiteral("builtin:cornell"), &error))
+        qFatal("cannot open builtin:cornell: %s", qPrintable(error));
+    return document;
+}
+
+int nodeWithMaterial(const doc::Document& document, const std::string& material)
+{
+    const auto& state = document.state();
+    for (std::size_t i = 0; i < state.nodes.size(); ++i)
+        if (state.materials[std::size_t(state.nodes[i].material)].name == material)
+            return int(i);
+    return -1;
+}
+
+template <typename T> T* child(QWidget* parent, const char* name)
+{
+    T* widget = parent->findChild<T*>(QString::fromLatin1(name));
+    if (!widget)
+        qFatal("no child %s", name);
+    return widget;
+}
+
+/** Clicks a check box on its indicator (its centre may lie right of the label, outside the hit area). */
+void clickCheckBox(QCheckBox* check)
+{
+    QTest::mouseClick(check, Qt::LeftButton, {}, QPoint(6, check->height() / 2));
+}
+
+} // namespace
+
+class TstDocks : public QObject {
+    Q_OBJECT
+
+private slots:
+    void sceneTreeModelPassesTesterThroughEdits();
+    void renameThroughModelIsUndoable();
+    void checkStatesEditVisibilityAndDynamic();
+    void sceneGraphDockSyncsSelection();
+    void sceneGraphDockDeleteAndDuplicate();
+    void materialDockEmissiveToggle();
+    void materialDockSpinBurstIsOneUndoStep();
+    void renderSettingsPresetIsOneUndoStep();
+    void renderSettingsResolutionCombo();
+    void lightDockAddAndUndo();
+    void statsDockShowsRows();
+};
+
+void TstDocks::sceneTreeModelPassesTesterThroughEdits()
+{
+    auto document = openCornell();
+    ui::SceneTreeModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    model.setDocument(document.get());
+
+    const auto nodeRows = [&] { return model.rowCount(model.groupIndex(ui::SceneTreeModel::SceneGroup)); };
+    const auto lightRows = [&] { return model.rowCount(model.groupIndex(ui::SceneTreeModel::LightsGroup)); };
+    const int nodes = int(document->state().nodes.size());
+    QVERIFY(nodes > 0);
+    QCOMPARE(model.rowCount(), 3);
+    QCOMPARE(nodeRows(), nodes);
+    QCOMPARE(lightRows(), int(document->state().lights.size()));
+    QCOMPARE(model.data(model.indexForNode(0)).toString(), document->state().nodes[0].name);
+    QCOMPARE(ui::SceneTreeModel::nodeIndex(model.indexForNode(2)), 2);
+    QCOMPARE(model.indexForNode(2).data(ui::SceneTreeModel::NodeIndexRole).toInt(), 2);
+    QCOMPARE(ui::SceneTreeModel::nodeIndex(model.groupIndex(ui::SceneTreeModel::SceneGroup)), -1);
+
+    document->setNodeName(1, QStringLiteral("renamed"));
+    document->setNodeVisible(2, false);
+    document->setNodeDynamic(3, true);
+    document->duplicateNode(0);
+    QCOMPARE(nodeRows(), nodes + 1);
+    document->deleteNode(1);
+    QCOMPARE(nodeRows(), nodes);
+    doc::LightNode light;
+    light.type = doc::LightType::Directional;
+    document->addLight(light);
+    QCOMPARE(lightRows(), int(document->state().lights.size()));
+    QCOMPARE(ui::SceneTreeModel::lightIndex(model.indexForLight(lightRows() - 1)), lightRows() - 1);
+    document->removeLight(0);
+    QCOMPARE(lightRows(), int(document->state().lights.size()));
+
+    while (document->undoStack()->canUndo()) {
+        document->undoStack()->undo();
+        QCOMPARE(nodeRows(), int(document->state().nodes.size()));
+        QCOMPARE(lightRows(), int(document->state().lights.size()));
+    }
+    QCOMPARE(nodeRows(), nodes);
+    while (document->undoStack()->canRedo())
+        document->undoStack()->redo();
+    QCOMPARE(nodeRows(), int(document->state().nodes.size()));
+
+    QString error;
+    QVERIFY2(document->newFromScene(QStringLiteral("builtin:cornell_point"), &error), qPrintable(error));
+    QCOMPARE(nodeRows(), int(document->state().nodes.size()));
+    QCOMPARE(lightRows(), int(document->state().lights.size()));
+    QVERIFY(lightRows() > 0);
+}
+
+void TstDocks::renameThroughModelIsUndoable()
+{
+    auto document = openCornell();
+    ui::SceneTreeModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    model.setDocument(document.get());
+
+    const QString before = document->state().nodes[0].name;
+    QVERIFY(model.setData(model.indexForNode(0), QStringLiteral("Floor 2"), Qt::EditRole));
+    QCOMPARE(document->state().nodes[0].name, QStringLiteral("Floor 2"));
+    QCOMPARE(model.indexForNode(0).data().toString(), QStringLiteral("Floor 2"));
+    QCOMPARE(document->undoStack()->count(), 1);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().nodes[0].name, before);
+    QCOMPARE(model.indexForNode(0).data().toString(), before);
+    // An empty name is refused rather than stored.
+    QVERIFY(!model.setData(model.indexForNode(0), QStringLiteral("  "), Qt::EditRole));
+    QCOMPARE(document->state().nodes[0].name, before);
+}
+
+void TstDocks::checkStatesEditVisibilityAndDynamic()
+{
+    auto document = openCornell();
+    ui::SceneTreeModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    model.setDocument(document.get());
+
+    const QModelIndex name = model.indexForNode(1);
+    QCOMPARE(name.data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
+    QVERIFY(model.flags(name) & Qt::ItemIsUserCheckable);
+    QVERIFY(model.setData(name, Qt::Unchecked, Qt::CheckStateRole));
+    QVERIFY(!document->state().nodes[1].visible);
+    QCOMPARE(model.indexForNode(1).data(Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    QVERIFY(document->buildRenderScene().meshes.size() < document->state().nodes.size());
+
+    const QModelIndex dynamic = model.indexForNode(1, ui::SceneTreeModel::DynamicColumn);
+    QCOMPARE(dynamic.data(Qt::CheckStateRole).toInt(),
+        int(document->state().nodes[1].dynamic ? Qt::Checked : Qt::Unchecked));
+    QVERIFY(model.setData(dynamic, Qt::Checked, Qt::CheckStateRole));
+    QVERIFY(document->state().nodes[1].dynamic);
+
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QVERIFY(document->state().nodes[1].visible);
+    QCOMPARE(model.indexForNode(1).data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
+}
+
+void TstDocks::sceneGraphDockSyncsSelection()
+{
+    auto document = openCornell();
+    ui::SceneGraphDock dock;
+    QCOMPARE(dock.objectName(), QStringLiteral("SceneGraphDock"));
+    dock.setDocument(document.get());
+    dock.show();
+
+    document->setSelectedNode(2);
+    QCOMPARE(ui::SceneTreeModel::nodeIndex(dock.view()->currentIndex()), 2);
+    QVERIFY(dock.deleteAction()->isEnabled());
+
+    dock.view()->setCurrentIndex(dock.model()->indexForNode(4));
+    QCOMPARE(document->selectedNode(), 4);
+
+    // Selecting a group row is no node.
+    dock.view()->setCurrentIndex(dock.model()->groupIndex(ui::SceneTreeModel::LightsGroup));
+    QCOMPARE(document->selectedNode(), -1);
+    QVERIFY(!dock.deleteAction()->isEnabled());
+}
+
+void TstDocks::sceneGraphDockDeleteAndDuplicate()
+{
+    auto document = openCornell();
+    ui::SceneGraphDock dock;
+    dock.setDocument(document.get());
+    dock.show();
+    const int nodes = int(document->state().nodes.size());
+
+    document->setSelectedNode(3);
+    dock.duplicateAction()->trigger();
+    QCOMPARE(int(document->state().nodes.size()), nodes + 1);
+    document->setSelectedNode(0);
+    const QString deleted = document->state().nodes[0].name;
+    dock.deleteAction()->trigger();
+    QCOMPARE(int(document->state().nodes.size()), nodes);
+    QVERIFY(document->state().nodes[0].name != deleted);
+
+    document->setSelectedNode(1);
+    QCOMPARE(dock.toggleVisibleAction()->text(), QStringLiteral("Hide"));
+    dock.toggleVisibleAction()->trigger();
+    QVERIFY(!document->state().nodes[1].visible);
+    QCOMPARE(dock.toggleVisibleAction()->text(), QStringLiteral("Show"));
+    dock.dynamicAction()->trigger();
+    QVERIFY(document->state().nodes[1].dynamic);
+    QVERIFY(dock.dynamicAction()->isChecked());
+
+    while (document->undoStack()->canUndo())
+        document->undoStack()->undo();
+    QCOMPARE(int(document->state().nodes.size()), nodes);
+    QCOMPARE(document->state().nodes[0].name, deleted);
+}
+
+void TstDocks::materialDockEmissiveToggle()
+{
+    auto document = openCornell();
+    ui::MaterialDock dock;
+    QCOMPARE(dock.objectName(), QStringLiteral("MaterialDock"));
+    dock.setDocument(document.get());
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+
+    const int node = nodeWithMaterial(*document, "white");
+    QVERIFY(node >= 0);
+    document->setSelectedNode(node);
+    const int white = document->state().nodes[std::size_t(node)].material;
+    QCOMPARE(dock.currentMaterial(), white);
+    QCOMPARE(child<QComboBox>(&dock, "materialCombo")->currentText(), QStringLiteral("white"));
+
+    auto* emissive = child<QCheckBox>(&dock, "emissiveCheck");
+    auto* strength = child<QDoubleSpinBox>(&dock, "emissionStrength");
+    QVERIFY(!emissive->isChecked());
+    QVERIFY(!strength->isEnabled());
+    QVERIFY(!document->state().materials[std::size_t(white)].isEmissive());
+
+    clickCheckBox(emissive);
+    QVERIFY(emissive->isChecked());
+    QVERIFY(strength->isEnabled());
+    QVERIFY(document->state().materials[std::size_t(white)].isEmissive());
+    QCOMPARE(document->undoStack()->count(), 1);
+
+    document->undoStack()->undo();
+    QVERIFY(!document->state().materials[std::size_t(white)].isEmissive());
+    QVERIFY(!emissive->isChecked());
+
+    // Off keeps the colour and strength in the panel, so on brings them back.
+    clickCheckBox(emissive);
+    strength->setValue(3.0);
+    clickCheckBox(emissive);
+    QVERIFY(!document->state().materials[std::size_t(white)].isEmissive());
+    QCOMPARE(strength->value(), 3.0);
+    clickCheckBox(emissive);
+    QCOMPARE(document->state().materials[std::size_t(white)].emission.x, 3.0f);
+
+    // An emissive material from the file splits into colour times strength (brightest channel 1).
+    document->setSelectedNode(nodeWithMaterial(*document, "light"));
+    QVERIFY(emissive->isChecked());
+    QCOMPARE(strength->value(), 17.0);
+}
+
+void TstDocks::materialDockSpinBurstIsOneUndoStep()
+{
+    auto document = openCornell();
+    ui::MaterialDock dock;
+    dock.setDocument(document.get());
+    dock.show();
+    const int node = nodeWithMaterial(*document, "white");
+    document->setSelectedNode(node);
+    const int white = dock.currentMaterial();
+
+    auto* shininess = child<QDoubleSpinBox>(&dock, "shininessSpin");
+    shininess->selectAll();
+    QTest::keyClicks(shininess, QStringLiteral("250"));
+    QTest::keyClick(shininess, Qt::Key_Up);
+    QTest::keyClick(shininess, Qt::Key_Up);
+    QVERIFY(document->state().materials[std::size_t(white)].shininess > 250.0f);
+    QCOMPARE(document->undoStack()->count(), 1);
+
+    document->undoStack()->undo();
+    QCOMPARE(document->state().materials[std::size_t(white)].shininess, 0.0f);
+    QCOMPARE(shininess->value(), 0.0);
+}
+
+void TstDocks::renderSettingsPresetIsOneUndoStep()
+{
+    auto document = openCornell();
+    ui::RenderSettingsDock dock;
+    QCOMPARE(dock.objectName(), QStringLiteral("RenderSettingsDock"));
+    dock.setDocument(document.get());
+    dock.show();
+    const render::RenderSettings before = document->state().settings;
+
+    QTest::mouseClick(child<QPushButton>(&dock, "presetHigh"), Qt::LeftButton);
+    const render::RenderSettings& s = document->state().settings;
+    QCOMPARE(s.voxelResolution, 256);
+    QCOMPARE(s.diffuseConeCount, 9);
+    QCOMPARE(s.diffuseApertureDeg, 45.0f);
+    QCOMPARE(s.stepFactor, 0.75f);
+    QCOMPARE(document->undoStack()->count(), 1);
+    QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());
+    QVERIFY(!child<QPushButton>(&dock, "presetFast")->isChecked());
+    QCOMPARE(child<QSpinBox>(&dock, "diffuseConeCount")->value(), 9);
+
+    document->undoStack()->undo();
+    QCOMPARE(document->state().settings.voxelResolution, before.voxelResolution);
+    QCOMPARE(document->state().settings.diffuseConeCount, before.diffuseConeCount);
+    QCOMPARE(child<QComboBox>(&dock, "voxelResolutionCombo")->currentData().toInt(), before.voxelResolution);
+}
+
+void TstDocks::renderSettingsResolutionCombo()
+{
+    auto document = openCornell();
+    ui::RenderSettingsDock dock;
+    dock.setDocument(document.get());
+    dock.show();
+
+    auto* combo = child<QComboBox>(&dock, "voxelResolutionCombo");
+    combo->setCurrentIndex(combo->findData(64));
+    QCOMPARE(document->state().settings.voxelResolution, 64);
+    QTest::keyClick(combo, Qt::Key_Down);
+    QCOMPARE(document->state().settings.voxelResolution, 128);
+
+    // "auto" (the spin box's minimum) stores a negative distance.
+    auto* distance = child<QDoubleSpinBox>(&dock, "maxDistance");
+    QCOMPARE(distance->text(), QStringLiteral("auto"));
+    distance->setValue(2.5);
+    QCOMPARE(document->state().settings.maxDistance, 2.5f);
+    distance->setValue(distance->minimum());
+    QVERIFY(document->state().settings.maxDistance < 0.0f);
+
+    auto* view = child<QComboBox>(&dock, "viewCombo");
+    view->setCurrentIndex(view->findData(int(render::DebugView::AmbientOcclusion)));
+    QCOMPARE(document->state().settings.view, render::DebugView::AmbientOcclusion);
+    clickCheckBox(child<QCheckBox>(&dock, "indirectSpecularCheck"));
+    QVERIFY(!document->state().settings.indirectSpecular);
+}
+
+void TstDocks::lightDockAddAndUndo()
+{
+    auto document = openCornell();
+    ui::LightDock dock;
+    QCOMPARE(dock.objectName(), QStringLiteral("LightDock"));
+    dock.setDocument(document.get());
+    dock.show();
+    const int lights = int(document->state().lights.size());
+
+    QTest::mouseClick(child<QPushButton>(&dock, "addPointLightButton"), Qt::LeftButton);
+    QCOMPARE(int(document->state().lights.size()), lights + 1);
+    QCOMPARE(document->state().lights.back().type, doc::LightType::Point);
+    QCOMPARE(dock.currentLight(), lights);
+    auto* intensity = child<QDoubleSpinBox>(&dock, "lightIntensity");
+    QVERIFY(intensity->suffix().contains(QStringLiteral("W/sr")));
+    document->undoStack()->undo();
+    QCOMPARE(int(document->state().lights.size()), lights);
+
+    QTest::mouseClick(child<QPushButton>(&dock, "addDirectionalLightButton"), Qt::LeftButton);
+    QCOMPARE(document->state().lights.back().type, doc::LightType::Directional);
+    QVERIFY(intensity->suffix().contains(QStringLiteral("W/m²")));
+    intensity->setValue(5.0);
+    QCOMPARE(document->state().lights.back().intensity, 5.0f);
+    clickCheckBox(child<QCheckBox>(&dock, "lightShadows"));
+    QVERIFY(!document->state().lights.back().castsShadows);
+
+    QTest::mouseClick(child<QPushButton>(&dock, "removeLightButton"), Qt::LeftButton);
+    QCOMPARE(int(document->state().lights.size()), lights);
+    document->undoStack()->undo();
+    QCOMPARE(int(document->state().lights.size()), lights + 1);
+}
+
+void TstDocks::statsDockShowsRows()
+{
+    ui::StatsDock dock;
+    QCOMPARE(dock.objectName(), QStringLiteral("StatsDock"));
+    render::FrameStats stats;
+    stats.passes = { { "voxelize", "run", "scene changed", 1.25 },
+        { "mipmap", "reused", "inputs unchanged", 0.0 }, { "cone_trace", "run", "every frame", 2.5 } };
+    stats.totalGpuMs = 3.75;
+    stats.voxelBytes = 16u * 1024u * 1024u;
+    stats.voxelResolution = 128;
+    stats.voxelSize = 0.02f;
+    stats.width = 640;
+    stats.height = 480;
+    dock.showStats(stats);
+
+    QTableWidget* table = dock.table();
+    QCOMPARE(table->rowCount(), 3);
+    QCOMPARE(table->item(0, 0)->text(), QStringLiteral("voxelize"));
+    QCOMPARE(table->item(1, 1)->text(), QStringLiteral("reused"));
+    QCOMPARE(table->item(1, 2)->text(), QStringLiteral("inputs unchanged"));
+    QCOMPARE(table->item(0, 3)->text(), QStringLiteral("1.250"));
+    QCOMPARE(child<QLabel>(&dock, "totalGpuLabel")->text(), QStringLiteral("3.750 ms"));
+    QCOMPARE(child<QLabel>(&dock, "voxelMemoryLabel")->text(), QStringLiteral("16.0 MiB"));
+    QVERIFY(child<QLabel>(&dock, "voxelGridLabel")->text().startsWith(QStringLiteral("128³")));
+
+    stats.passes.resize(1);
+    dock.showStats(stats);
+    QCOMPARE(table->rowCount(), 1);
+}
+
+QTEST_MAIN(TstDocks)
+#include "tst_Docks.moc"

@@ -1,0 +1,195 @@
+#include "TestSupport.h"
+
+#include "ui/MainWindow.h"
+#include "ui/MaterialDock.h"
+#include "ui/RenderSettingsDock.h"
+#include "ui/ViewportWidget.h"
+#include "ui/VoxelInspectorDock.h"
+
+#include "document/Document.h"
+#include "document/DocumentState.h"
+#include "imageio/ImageMetrics.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace vct;
+
+/** The editor driven through its real widgets under Xvfb, with llvmpipe behind the viewport. */
+class EditorTest : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain()
+    {
+        // The viewport's renderer needs 4.5 core; Qt must know before the application exists.
+        QSurfaceFormat format;
+        format.setVersion(4, 5);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+        format.setDepthBufferSize(24);
+        QSurfaceFormat::setDefaultFormat(format);
+        qputenv("VCT_NO_DIALOGS", "1");
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void viewportShowsAnImage();
+    void emissiveFlagBrightensAndUndoRestores();
+    void inspectorCountsMatchTheVoxels();
+    void saveCloseOpenGivesTheSameDocument();
+    void badFilesLeaveTheDocumentAlone();
+
+private:
+    bool waitForFrame();
+    double meanRadiance();
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+bool EditorTest::waitForFrame()
+{
+    QSignalSpy spy(m_window->viewport(), &ui::ViewportWidget::frameRendered);
+    m_window->viewport()->update();
+    return spy.wait(20000);
+}
+
+double EditorTest::meanRadiance()
+{
+    const render::RadianceImage image = m_window->viewport()->renderFullFrame(48, 48);
+    return image.isEmpty() ? -1.0 : io::ImageMetrics::meanLuminance(image);
+}
+
+void EditorTest::initTestCase()
+{
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->openInitial(QStringLiteral("builtin:cornell_point"));
+    render::RenderSettings settings = m_window->document()->state().settings;
+    settings.voxelResolution = 32; // small and quick on llvmpipe
+    m_window->document()->setSettings(settings);
+    m_window->document()->undoStack()->clear();
+    m_window->resize(960, 640);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY2(waitForFrame(), "the viewport rendered no frame");
+    QVERIFY2(m_window->viewport()->lastError().isEmpty(), qPrintable(m_window->viewport()->lastError()));
+}
+
+void EditorTest::cleanupTestCase()
+{
+    m_window.reset();
+}
+
+void EditorTest::viewportShowsAnImage()
+{
+    const QImage frame = m_window->viewport()->grabFramebuffer();
+    QVERIFY(!frame.isNull());
+    double sum = 0.0;
+    for (int y = 0; y < frame.height(); y += 4)
+        for (int x = 0; x < frame.width(); x += 4)
+            sum += qGray(frame.pixel(x, y));
+    const double mean = sum / double((frame.height() / 4 + 1) * (frame.width() / 4 + 1));
+    QVERIFY2(mean > 20.0, qPrintable(QString("mean grey %1").arg(mean)));
+    const QString screenshot = test::outputDir() + QStringLiteral("/editor-screenshot.png");
+    QVERIFY(m_window->grab().save(screenshot));
+    qInfo("screenshot of the main window: %s", qPrintable(screenshot));
+}
+
+void EditorTest::emissiveFlagBrightensAndUndoRestores()
+{
+    doc::Document* document = m_window->document();
+    // Select a node whose material is the white of the walls and boxes.
+    int node = -1;
+    for (std::size_t i = 0; i < document->state().nodes.size(); ++i)
+        if (document->state().materials[std::size_t(document->state().nodes[i].material)].name == "white")
+            node = int(i);
+    QVERIFY(node >= 0);
+    document->setSelectedNode(node);
+    QCheckBox* emissive = m_window->materialDock()->findChild<QCheckBox*>(QStringLiteral("emissiveCheck"));
+    QVERIFY(emissive);
+    QVERIFY(!emissive->isChecked());
+    const double before = meanRadiance();
+    const int undoBefore = document->undoStack()->count();
+    emissive->click();
+    QVERIFY(emissive->isChecked());
+    QCOMPARE(document->undoStack()->count(), undoBefore + 1);
+    const double lit = meanRadiance();
+    QVERIFY2(lit > before * 1.2, qPrintable(QString("%1 -> %2").arg(before).arg(lit)));
+    document->undoStack()->undo();
+    QVERIFY(!emissive->isChecked());
+    const double restored = meanRadiance();
+    QVERIFY2(std::abs(restored - before) <= 1e-3 * (1.0 + before), qPrintable(QString("%1 vs %2").arg(restored).arg(before)));
+}
+
+void EditorTest::inspectorCountsMatchTheVoxels()
+{
+    ui::VoxelInspectorDock* inspector = m_window->inspectorDock();
+    QComboBox* resolution = m_window->renderSettingsDock()->findChild<QComboBox*>(QStringLiteral("voxelResolutionCombo"));
+    QVERIFY(resolution);
+    const int index = resolution->findText(QStringLiteral("64"), Qt::MatchStartsWith);
+    QVERIFY(index >= 0);
+    resolution->setCurrentIndex(index);
+    QCOMPARE(m_window->document()->state().settings.voxelResolution, 64);
+    inspector->enabledBox()->setChecked(true);
+    inspector->levelSlider()->setValue(0);
+    QVERIFY(waitForFrame());
+    QCOMPARE(m_window->viewport()->voxelLevelCount(), 7);
+    QCOMPARE(inspector->levelSlider()->maximum(), 6);
+    const std::size_t occupied = m_window->viewport()->occupiedVoxelCount();
+    QVERIFY(occupied > 0);
+    QCOMPARE(m_window->viewport()->lastCubeCount(), occupied);
+    QVERIFY(inspector->countLabel()->text().contains(QString::number(occupied)));
+    std::size_t previous = occupied;
+    for (int level = 1; level <= inspector->levelSlider()->maximum(); ++level) {
+        inspector->levelSlider()->setValue(level);
+        QVERIFY(waitForFrame());
+        const std::size_t count = m_window->viewport()->lastCubeCount();
+        QVERIFY2(count <= previous, qPrintable(QString("level %1: %2 after %3").arg(level).arg(count).arg(previous)));
+        QVERIFY(count > 0);
+        previous = count;
+    }
+    inspector->enabledBox()->setChecked(false);
+}
+
+void EditorTest::saveCloseOpenGivesTheSameDocument()
+{
+    doc::Document* document = m_window->document();
+    doc::NodeTransform moved = document->state().nodes[0].transform;
+    moved.translation.x += 0.25f;
+    document->setNodeTransform(0, moved);
+    const QString path = test::outputDir() + QStringLiteral("/editor-roundtrip.vctproj");
+    QFile::remove(path);
+    QVERIFY(m_window->saveProjectAs(path));
+    QVERIFY(!document->isModified());
+    ui::MainWindow reopened;
+    QVERIFY(reopened.openProject(path));
+    QVERIFY(doc::sameDocument(reopened.document()->state(), document->state()));
+}
+
+void EditorTest::badFilesLeaveTheDocumentAlone()
+{
+    doc::Document* document = m_window->document();
+    const doc::DocumentState before = document->state();
+    const QString filePath = document->filePath();
+    const QString corrupt = test::outputDir() + QStringLiteral("/corrupt.vctproj");
+    QFile file(corrupt);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\"format\": \"vct-studio-project\", \"version\": 1, \"nodes\": [");
+    file.close();
+    QVERIFY(!m_window->openProject(corrupt));
+    QVERIFY(doc::sameDocument(document->state(), before));
+    QCOMPARE(document->filePath(), filePath);
+    // A save that cannot happen (the parent "directory" is a file) fails and keeps the document as it was.
+    QVERIFY(!m_window->saveProjectAs(corrupt + QStringLiteral("/inside.vctproj")));
+    QCOMPARE(document->filePath(), filePath);
+}
+
+QTEST_MAIN(EditorTest)
+#include "tst_Editor.moc"

@@ -1,0 +1,306 @@
+#include "LightDock.h"
+
+#include "ColorButton.h"
+#include "SceneTreeModel.h"
+
+#include "document/Document.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace vct::ui {
+
+namespace {
+
+QString intensityUnit(doc::LightType type)
+{
+    return type == doc::LightType::Point ? QStringLiteral(" W/sr") : QStringLiteral(" W/m²");
+}
+
+void setSpinValue(QDoubleSpinBox* spin, double value)
+{
+    if (std::abs(spin->value() - value) > 1e-9) {
+        const QSignalBlocker block(spin);
+        spin->setValue(value);
+    }
+}
+
+/** Three compact spin boxes labelled X, Y, Z. */
+QWidget* makeVectorRow(
+    std::array<QDoubleSpinBox*, 3>& spins, double min, double max, const QString& suffix, const QString& tip)
+{
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    const char* axes[] = { "X", "Y", "Z" };
+    for (int i = 0; i < 3; ++i) {
+        auto* spin = new QDoubleSpinBox;
+        spin->setRange(min, max);
+        spin->setDecimals(3);
+        spin->setSingleStep(0.05);
+        spin->setSuffix(suffix);
+        spin->setPrefix(QStringLiteral("%1 ").arg(QLatin1String(axes[i])));
+        spin->setToolTip(tip);
+        spin->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        spin->setButtonSymbols(QAbstractSpinBox::NoButtons);
+        spins[std::size_t(i)] = spin;
+        layout->addWidget(spin);
+    }
+    return row;
+}
+
+} // namespace
+
+LightDock::LightDock(QWidget* parent)
+    : QDockWidget(tr("Light"), parent)
+{
+    setObjectName(QStringLiteral("LightDock"));
+    auto* body = new QWidget(this);
+
+    m_model = new SceneTreeModel(this);
+    m_list = new QListView;
+    m_list->setObjectName(QStringLiteral("lightList"));
+    m_list->setModel(m_model);
+    m_list->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_list->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_list->setMaximumHeight(120);
+
+    m_addPoint = new QPushButton(tr("Add point"));
+    m_addPoint->setObjectName(QStringLiteral("addPointLightButton"));
+    m_addPoint->setToolTip(tr("Add a point light at the camera's look-at point (one undo step)"));
+    m_addDirectional = new QPushButton(tr("Add directional"));
+    m_addDirectional->setObjectName(QStringLiteral("addDirectionalLightButton"));
+    m_addDirectional->setToolTip(tr("Add a directional (sun) light shining down (one undo step)"));
+    m_remove = new QPushButton(tr("Remove"));
+    m_remove->setObjectName(QStringLiteral("removeLightButton"));
+    m_remove->setToolTip(tr("Remove the selected light (one undo step)"));
+    auto* buttons = new QHBoxLayout;
+    buttons->setContentsMargins(0, 0, 0, 0);
+    buttons->addWidget(m_addPoint);
+    buttons->addWidget(m_addDirectional);
+    buttons->addWidget(m_remove);
+
+    m_name = new QLineEdit;
+    m_name->setObjectName(QStringLiteral("lightName"));
+    m_type = new QComboBox;
+    m_type->setObjectName(QStringLiteral("lightType"));
+    m_type->addItem(tr("Point"), int(doc::LightType::Point));
+    m_type->addItem(tr("Directional"), int(doc::LightType::Directional));
+    m_type->setToolTip(
+        tr("Point: radiates from a position (intensity in W/sr).\n"
+           "Directional: parallel rays from infinitely far, like the sun (irradiance in W/m²)."));
+    m_positionRow = makeVectorRow(m_position, -1.0e4, 1.0e4, QStringLiteral(" m"), tr("Position in metres"));
+    m_directionRow = makeVectorRow(m_direction, -1.0e3, 1.0e3, QString(),
+        tr("The way the light travels (need not be unit length; zero is not allowed)"));
+    m_color = new ColorButton;
+    m_color->setObjectName(QStringLiteral("lightColor"));
+    m_color->setDialogTitle(tr("Light colour"));
+    m_intensity = new QDoubleSpinBox;
+    m_intensity->setObjectName(QStringLiteral("lightIntensity"));
+    m_intensity->setRange(0.0, 1.0e6);
+    m_intensity->setDecimals(3);
+    m_intensity->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    m_intensity->setToolTip(tr("Emitted per channel = colour × intensity: radiant intensity (W/sr) for point "
+                               "lights, irradiance on a facing surface (W/m²) for directional lights"));
+    m_shadows = new QCheckBox(tr("Casts shadows"));
+    m_shadows->setObjectName(QStringLiteral("lightShadows"));
+
+    m_editors = new QWidget;
+    auto* form = new QFormLayout(m_editors);
+    form->setContentsMargins(0, 0, 0, 0);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->addRow(tr("Name"), m_name);
+    form->addRow(tr("Type"), m_type);
+    m_positionLabel = new QLabel(tr("Position"));
+    form->addRow(m_positionLabel, m_positionRow);
+    m_directionLabel = new QLabel(tr("Direction"));
+    form->addRow(m_directionLabel, m_directionRow);
+    form->addRow(tr("Colour"), m_color);
+    form->addRow(tr("Intensity"), m_intensity);
+    form->addRow(QString(), m_shadows);
+
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_list);
+    layout->addLayout(buttons);
+    layout->addWidget(m_editors);
+    layout->addStretch();
+    setWidget(body);
+
+    connect(m_addPoint, &QPushButton::clicked, this, &LightDock::addPointLight);
+    connect(m_addDirectional, &QPushButton::clicked, this, &LightDock::addDirectionalLight);
+    connect(m_remove, &QPushButton::clicked, this, &LightDock::removeCurrentLight);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &LightDock::attachList);
+    connect(m_list->selectionModel(), &QItemSelectionModel::currentChanged, this, &LightDock::loadLight);
+
+    connect(m_name, &QLineEdit::editingFinished, this, [this] {
+        const QString name = m_name->text().trimmed();
+        applyEdit([&](doc::LightNode& l) { l.name = name; });
+    });
+    connect(m_type, &QComboBox::currentIndexChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const auto type = doc::LightType(m_type->itemData(row).toInt());
+        applyEdit([&](doc::LightNode& l) { l.type = type; });
+        loadLight(); // The position/direction rows and the intensity unit swap.
+    });
+    for (std::size_t i = 0; i < 3; ++i) {
+        connect(m_position[i], &QDoubleSpinBox::valueChanged, this,
+            [this, i](double v) { applyEdit([&](doc::LightNode& l) { l.position[int(i)] = float(v); }); });
+        connect(m_direction[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            applyEdit([&](doc::LightNode& l) {
+                glm::vec3 d = l.direction;
+                d[int(i)] = float(v);
+                // A zero direction has no meaning; keep the last usable one (the spin box is reloaded).
+                if (d != glm::vec3(0.0f))
+                    l.direction = d;
+            });
+        });
+    }
+    connect(m_color, &ColorButton::colorChanged, this,
+        [this](const glm::vec3& c) { applyEdit([&](doc::LightNode& l) { l.color = c; }); });
+    connect(m_intensity, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.intensity = float(v); }); });
+    connect(m_shadows, &QCheckBox::toggled, this,
+        [this](bool on) { applyEdit([&](doc::LightNode& l) { l.castsShadows = on; }); });
+
+    setDocument(nullptr);
+}
+
+void LightDock::setDocument(doc::Document* document)
+{
+    disconnect(m_changedConnection);
+    m_document = document;
+    m_model->setDocument(document); // Resets the model, which re-attaches the list.
+    attachList();
+    if (m_document)
+        m_changedConnection
+            = connect(m_document, &doc::Document::changed, this, &LightDock::onDocumentChanged);
+    loadLight();
+}
+
+int LightDock::currentLight() const
+{
+    return SceneTreeModel::lightIndex(m_list->currentIndex());
+}
+
+void LightDock::setCurrentLight(int index)
+{
+    const QModelIndex item = m_model->indexForLight(index);
+    if (item.isValid())
+        m_list->setCurrentIndex(item);
+}
+
+void LightDock::addPointLight()
+{
+    addLight(true);
+}
+
+void LightDock::addDirectionalLight()
+{
+    addLight(false);
+}
+
+void LightDock::addLight(bool point)
+{
+    if (!m_document)
+        return;
+    // The name stays empty: the document numbers new lights per type.
+    doc::LightNode light;
+    if (point) {
+        light.type = doc::LightType::Point;
+        // Where the user is looking is inside the scene more often than any fixed point.
+        light.position = m_document->state().camera.lookAt;
+        light.intensity = 1.0f;
+    } else {
+        light.type = doc::LightType::Directional;
+        light.direction = glm::vec3(-0.3f, -1.0f, -0.2f);
+        light.intensity = 1.0f;
+    }
+    m_document->addLight(light);
+    setCurrentLight(int(m_document->state().lights.size()) - 1);
+}
+
+void LightDock::removeCurrentLight()
+{
+    const int light = currentLight();
+    if (m_document && light >= 0)
+        m_document->removeLight(light);
+}
+
+void LightDock::onDocumentChanged(const doc::ChangeEvent& event)
+{
+    using Kind = doc::ChangeEvent::Kind;
+    if ((event.kind == Kind::Lights && !m_applying) || event.kind == Kind::Reset)
+        loadLight();
+}
+
+void LightDock::attachList()
+{
+    m_list->setRootIndex(m_model->groupIndex(SceneTreeModel::LightsGroup));
+    if (!m_list->currentIndex().isValid() && m_model->rowCount(m_list->rootIndex()) > 0)
+        m_list->setCurrentIndex(m_model->indexForLight(0));
+    loadLight();
+}
+
+void LightDock::applyEdit(const std::function<void(doc::LightNode&)>& change)
+{
+    const int index = currentLight();
+    if (!m_document || index < 0 || index >= int(m_document->state().lights.size()))
+        return;
+    const doc::LightNode before = m_document->state().lights[std::size_t(index)];
+    doc::LightNode light = before;
+    change(light);
+    if (light == before) {
+        loadLight(); // A rejected edit (zero direction) shows the stored value again.
+        return;
+    }
+    m_applying = true;
+    m_document->setLight(index, light);
+    m_applying = false;
+}
+
+void LightDock::loadLight()
+{
+    const int index = currentLight();
+    const bool valid = m_document && index >= 0 && index < int(m_document->state().lights.size());
+    m_editors->setEnabled(valid);
+    m_remove->setEnabled(valid);
+    m_addPoint->setEnabled(m_document);
+    m_addDirectional->setEnabled(m_document);
+    if (!valid) {
+        m_directionLabel->hide();
+        m_directionRow->hide();
+        return;
+    }
+    const doc::LightNode& l = m_document->state().lights[std::size_t(index)];
+    const bool point = l.type == doc::LightType::Point;
+
+    const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity);
+    if (!m_name->hasFocus())
+        m_name->setText(l.name);
+    m_type->setCurrentIndex(m_type->findData(int(l.type)));
+    for (int i = 0; i < 3; ++i) {
+        setSpinValue(m_position[std::size_t(i)], double(l.position[i]));
+        setSpinValue(m_direction[std::size_t(i)], double(l.direction[i]));
+    }
+    m_positionLabel->setVisible(point);
+    m_positionRow->setVisible(point);
+    m_directionLabel->setVisible(!point);
+    m_directionRow->setVisible(!point);
+    m_color->setColor(l.color);
+    m_intensity->setSuffix(intensityUnit(l.type));
+    setSpinValue(m_intensity, double(l.intensity));
+    m_shadows->setChecked(l.castsShadows);
+}
+
+} // namespace vct::ui

@@ -1,0 +1,395 @@
+#include "MainWindow.h"
+
+#include "LightDock.h"
+#include "MaterialDock.h"
+#include "RenderSettingsDock.h"
+#include "SceneGraphDock.h"
+#include "StatsDock.h"
+#include "ViewportWidget.h"
+#include "VoxelInspectorDock.h"
+
+#include "document/BuiltinScenes.h"
+#include "document/Document.h"
+#include "document/ProjectFile.h"
+#include "document/SceneLoader.h"
+#include "imageio/ImageFile.h"
+
+#include <QAction>
+#include <QFutureWatcher>
+#include <QProgressDialog>
+#include <QtConcurrent/QtConcurrentRun>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QUndoStack>
+
+namespace vct::ui {
+
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const QString kProjectFilter = QStringLiteral("VCT Studio projects (*.vctproj)");
+const QString kModelFilter = QStringLiteral("Models (*.obj *.gltf *.glb *.ply *.fbx *.dae *.3ds *.stl);;All files (*)");
+
+bool isModelFile(const QString& path)
+{
+    static const QStringList extensions = {"obj", "gltf", "glb", "ply", "fbx", "dae", "3ds", "stl", "blend", "x3d"};
+    return extensions.contains(QFileInfo(path).suffix().toLower());
+}
+
+// Tests and CI have nobody to answer a dialog.
+bool dialogsAllowed()
+{
+    return !qEnvironmentVariableIsSet("VCT_NO_DIALOGS");
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent)
+    , m_document(new doc::Document(this))
+    , m_viewport(new ViewportWidget(m_document, this))
+{
+    setCentralWidget(m_viewport);
+    setAcceptDrops(true);
+    setDockNestingEnabled(true);
+    buildDocks();
+    buildMenus();
+    resize(1280, 800);
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+
+    connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &doc::Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_viewport, &ViewportWidget::rendererFailed, this, [this](const QString& message) {
+        statusBar()->showMessage(tr("Renderer error: %1").arg(message));
+    });
+    m_autosaveTimer.setInterval(60 * 1000);
+    connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
+    m_autosaveTimer.start();
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+QString MainWindow::recoveryPath()
+{
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    QDir().mkpath(dir);
+    return dir + QStringLiteral("/recovery.vctproj");
+}
+
+void MainWindow::buildDocks()
+{
+    m_sceneDock = new SceneGraphDock(this);
+    m_materialDock = new MaterialDock(this);
+    m_lightDock = new LightDock(this);
+    m_settingsDock = new RenderSettingsDock(this);
+    m_inspectorDock = new VoxelInspectorDock(this);
+    m_statsDock = new StatsDock(this);
+    m_sceneDock->setDocument(m_document);
+    m_materialDock->setDocument(m_document);
+    m_lightDock->setDocument(m_document);
+    m_settingsDock->setDocument(m_document);
+    addDockWidget(Qt::LeftDockWidgetArea, m_sceneDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_lightDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_materialDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_settingsDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_inspectorDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_statsDock);
+    tabifyDockWidget(m_materialDock, m_settingsDock);
+    m_materialDock->raise();
+
+    connect(m_sceneDock, &SceneGraphDock::lightSelected, m_lightDock, &LightDock::setCurrentLight);
+    connect(m_inspectorDock, &VoxelInspectorDock::settingsChanged, m_viewport, &ViewportWidget::setInspector);
+    connect(m_viewport, &ViewportWidget::cubesDrawn, m_inspectorDock, &VoxelInspectorDock::setCubeCount);
+    connect(m_viewport, &ViewportWidget::voxelHovered, m_inspectorDock, &VoxelInspectorDock::setHoverText);
+    connect(m_viewport, &ViewportWidget::frameRendered, m_statsDock, &StatsDock::showStats);
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* fromScene = file->addMenu(tr("&New from built-in scene"));
+    for (const QString& name : doc::BuiltinScenes::names())
+        fromScene->addAction(name, this, [this, name] {
+            if (!maybeSave())
+                return;
+            QString error;
+            if (!m_document->newFromScene(QStringLiteral("builtin:") + name, &error))
+                showError(tr("New scene"), error);
+        });
+    file->addAction(tr("&Open project..."), QKeySequence::Open, this, [this] {
+        if (!maybeSave())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QString(), kProjectFilter);
+        if (!path.isEmpty())
+            openProject(path);
+    });
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    rebuildRecentMenu();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
+    file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { saveAs(); });
+    file->addSeparator();
+    file->addAction(tr("&Import model..."), QKeySequence(tr("Ctrl+I")), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import model"), QString(), kModelFilter);
+        if (!path.isEmpty())
+            importModel(path);
+    });
+    file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QStringLiteral("render.png"),
+            tr("PNG, tone-mapped (*.png);;PFM, linear radiance (*.pfm);;OpenEXR, linear radiance (*.exr)"));
+        if (!path.isEmpty())
+            exportImage(path);
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_materialDock),
+             static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
+             static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock)})
+        m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
+}
+
+void MainWindow::openInitial(const QString& specOrProject)
+{
+    const QString recovery = recoveryPath();
+    if (QFileInfo::exists(recovery) && dialogsAllowed()) {
+        const auto answer = QMessageBox::question(this, tr("Recover unsaved work?"),
+            tr("VCT Studio did not close normally last time. Recover the autosaved document?"));
+        if (answer == QMessageBox::Yes) {
+            QString error;
+            if (m_document->openProject(recovery, &error)) {
+                QFile::remove(recovery);
+                statusBar()->showMessage(tr("Recovered the autosaved document; save it to keep it."));
+                return;
+            }
+            showError(tr("Recovery failed"), error);
+        }
+        QFile::remove(recovery);
+    }
+    QString error;
+    const bool ok = specOrProject.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)
+        ? m_document->openProject(specOrProject, &error)
+        : m_document->newFromScene(specOrProject, &error);
+    if (!ok) {
+        showError(tr("Open"), error);
+        m_document->newFromScene(QStringLiteral("builtin:default"), &error);
+    }
+}
+
+bool MainWindow::openProject(const QString& path)
+{
+    QString error;
+    if (!m_document->openProject(path, &error)) {
+        showError(tr("Open project"), error);
+        return false;
+    }
+    addRecentFile(path);
+    return true;
+}
+
+bool MainWindow::saveProjectAs(const QString& path)
+{
+    QString error;
+    if (!m_document->saveProject(path, &error)) {
+        showError(tr("Save project"), error);
+        return false;
+    }
+    addRecentFile(path);
+    QFile::remove(recoveryPath());
+    return true;
+}
+
+bool MainWindow::save()
+{
+    return m_document->filePath().isEmpty() ? saveAs() : saveProjectAs(m_document->filePath());
+}
+
+bool MainWindow::saveAs()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), m_document->filePath(), kProjectFilter);
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive))
+        path += QStringLiteral(".vctproj");
+    return saveProjectAs(path);
+}
+
+bool MainWindow::importModel(const QString& path)
+{
+    // Assimp may take seconds on a big model: it runs on a worker thread while a dialog shows progress.
+    // Cancel closes the dialog at once and throws the result away when the worker finishes (Assimp has no
+    // way to stop half-way).
+    struct Loaded {
+        render::Scene scene;
+        QString error;
+        bool ok = false;
+    };
+    QFutureWatcher<Loaded> watcher;
+    QProgressDialog progress(tr("Importing %1...").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(300);
+    QEventLoop loop;
+    connect(&watcher, &QFutureWatcher<Loaded>::finished, &loop, &QEventLoop::quit);
+    connect(&progress, &QProgressDialog::canceled, &loop, &QEventLoop::quit);
+    watcher.setFuture(QtConcurrent::run([path] {
+        Loaded loaded;
+        loaded.ok = doc::SceneLoader::load(path, loaded.scene, &loaded.error);
+        return loaded;
+    }));
+    loop.exec();
+    progress.close();
+    if (!watcher.isFinished()) {
+        statusBar()->showMessage(tr("Import of %1 cancelled").arg(QFileInfo(path).fileName()), 5000);
+        // The worker keeps running detached from this function: let it finish and free its result.
+        auto* orphan = new QFutureWatcher<Loaded>(this);
+        connect(orphan, &QFutureWatcher<Loaded>::finished, orphan, &QObject::deleteLater);
+        orphan->setFuture(watcher.future());
+        return false;
+    }
+    Loaded loaded = watcher.result();
+    if (!loaded.ok) {
+        showError(tr("Import model"), loaded.error);
+        return false;
+    }
+    m_document->addImportedModel(path, std::move(loaded.scene));
+    statusBar()->showMessage(tr("Imported %1").arg(QFileInfo(path).fileName()), 5000);
+    return true;
+}
+
+bool MainWindow::exportImage(const QString& path)
+{
+    const qreal dpr = m_viewport->devicePixelRatioF();
+    const render::RadianceImage image = m_viewport->renderFullFrame(
+        int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
+    std::string error;
+    if (image.isEmpty() || !io::ImageFile::write(path.toStdString(), image, m_document->state().settings.exposure, &error)) {
+        showError(tr("Export image"), image.isEmpty() ? tr("nothing has been rendered yet") : QString::fromStdString(error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document->isModified() || !dialogsAllowed())
+        return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+        tr("The document has unsaved changes. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    // A normal close leaves no recovery file, so the next start offers none.
+    QFile::remove(recoveryPath());
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile() && (isModelFile(url.toLocalFile()) || url.toLocalFile().endsWith(QStringLiteral(".vctproj")))) {
+            event->acceptProposedAction();
+            return;
+        }
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    for (const QUrl& url : event->mimeData()->urls()) {
+        const QString path = url.toLocalFile();
+        if (path.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)) {
+            if (maybeSave())
+                openProject(path);
+        } else if (isModelFile(path)) {
+            importModel(path);
+        }
+    }
+}
+
+void MainWindow::showError(const QString& title, const QString& message)
+{
+    statusBar()->showMessage(message);
+    if (dialogsAllowed())
+        QMessageBox::warning(this, title, message);
+    else
+        qWarning("%s: %s", qPrintable(title), qPrintable(message));
+}
+
+void MainWindow::addRecentFile(const QString& path)
+{
+    QSettings settings;
+    QStringList files = settings.value(QStringLiteral("recentFiles")).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(QStringLiteral("recentFiles"), files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& path : files)
+        m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+            if (maybeSave())
+                openProject(path);
+        })->setToolTip(path);
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
+    setWindowTitle(tr("%1[*] - VCT Studio").arg(name));
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::autosave()
+{
+    if (!m_document->isModified())
+        return;
+    QString error;
+    // The recovery copy is written beside the settings, never over the user's file.
+    if (!doc::ProjectFile::save(recoveryPath(), m_document->state(), &error))
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 5000);
+}
+
+} // namespace vct::ui

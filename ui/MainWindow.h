@@ -1,0 +1,82 @@
+#pragma once
+
+#include <QMainWindow>
+#include <QTimer>
+
+class QMenu;
+
+namespace vct::doc {
+class Document;
+}
+
+namespace vct::ui {
+
+class LightDock;
+class MaterialDock;
+class RenderSettingsDock;
+class SceneGraphDock;
+class StatsDock;
+class ViewportWidget;
+class VoxelInspectorDock;
+
+/**
+ * The editor's main window: the viewport in the centre, one dock per panel (listed in the View menu, layout
+ * restored on the next start), File and Edit menus with undo/redo, recent files, autosave to a recovery file
+ * and drag-and-drop import. The composition root wires the panels to the one Document.
+ */
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /** Opens a project (.vctproj) or starts from a scene spec; offers recovery after a crash first. */
+    void openInitial(const QString& specOrProject);
+    doc::Document* document() const { return m_document; }
+    ViewportWidget* viewport() const { return m_viewport; }
+    MaterialDock* materialDock() const { return m_materialDock; }
+    RenderSettingsDock* renderSettingsDock() const { return m_settingsDock; }
+    VoxelInspectorDock* inspectorDock() const { return m_inspectorDock; }
+    SceneGraphDock* sceneGraphDock() const { return m_sceneDock; }
+    LightDock* lightDock() const { return m_lightDock; }
+    StatsDock* statsDock() const { return m_statsDock; }
+    /** Where autosave writes (beside the settings, per user). */
+    static QString recoveryPath();
+
+    bool openProject(const QString& path);
+    bool saveProjectAs(const QString& path);
+    bool importModel(const QString& path);
+    bool exportImage(const QString& path);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void buildMenus();
+    void buildDocks();
+    bool maybeSave();
+    bool save();
+    bool saveAs();
+    void showError(const QString& title, const QString& message);
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void updateTitle();
+    void autosave();
+
+    doc::Document* m_document;
+    ViewportWidget* m_viewport;
+    SceneGraphDock* m_sceneDock = nullptr;
+    MaterialDock* m_materialDock = nullptr;
+    LightDock* m_lightDock = nullptr;
+    RenderSettingsDock* m_settingsDock = nullptr;
+    VoxelInspectorDock* m_inspectorDock = nullptr;
+    StatsDock* m_statsDock = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QTimer m_autosaveTimer;
+};
+
+} // namespace vct::ui

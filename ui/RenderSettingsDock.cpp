@@ -1,0 +1,398 @@
+#include "RenderSettingsDock.h"
+
+#include "document/Document.h"
+
+#include "core/RenderSettings.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace vct::ui {
+
+namespace {
+
+using render::DebugView;
+
+struct ViewEntry {
+    DebugView view;
+    const char* label;
+};
+
+const ViewEntry kViews[] = {
+    { DebugView::Final, QT_TRANSLATE_NOOP("RenderSettingsDock", "Final") },
+    { DebugView::Direct, QT_TRANSLATE_NOOP("RenderSettingsDock", "Direct") },
+    { DebugView::IndirectDiffuse, QT_TRANSLATE_NOOP("RenderSettingsDock", "Indirect diffuse") },
+    { DebugView::IndirectSpecular, QT_TRANSLATE_NOOP("RenderSettingsDock", "Indirect specular") },
+    { DebugView::AmbientOcclusion, QT_TRANSLATE_NOOP("RenderSettingsDock", "Ambient occlusion") },
+    { DebugView::Albedo, QT_TRANSLATE_NOOP("RenderSettingsDock", "Albedo") },
+    { DebugView::Normal, QT_TRANSLATE_NOOP("RenderSettingsDock", "Normal") },
+    { DebugView::Emission, QT_TRANSLATE_NOOP("RenderSettingsDock", "Emission") },
+};
+
+// Settings compare by their key=value text: RenderSettings has no operator== and the text is what a
+// project file stores, so "unchanged" means the same thing here and there.
+bool sameSettings(const render::RenderSettings& a, const render::RenderSettings& b)
+{
+    return a.describe() == b.describe();
+}
+
+QDoubleSpinBox* makeSpin(
+    double min, double max, int decimals, double step, const QString& suffix, const QString& tip)
+{
+    auto* spin = new QDoubleSpinBox;
+    spin->setRange(min, max);
+    spin->setDecimals(decimals);
+    spin->setSingleStep(step);
+    spin->setSuffix(suffix);
+    spin->setToolTip(tip);
+    spin->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    return spin;
+}
+
+QCheckBox* makeCheck(const QString& text, const QString& tip)
+{
+    auto* check = new QCheckBox(text);
+    check->setToolTip(tip);
+    return check;
+}
+
+void setSpinValue(QDoubleSpinBox* spin, double value)
+{
+    if (std::abs(spin->value() - value) > 1e-9)
+        spin->setValue(value);
+}
+
+/** Selects the item whose data is `value`, adding it when a project carries a value the list lacks. */
+void selectIntItem(QComboBox* combo, int value, const QString& text)
+{
+    int row = combo->findData(value);
+    if (row < 0) {
+        combo->addItem(text, value);
+        row = combo->count() - 1;
+    }
+    combo->setCurrentIndex(row);
+}
+
+} // namespace
+
+RenderSettingsDock::RenderSettingsDock(QWidget* parent)
+    : QDockWidget(tr("Render settings"), parent)
+{
+    setObjectName(QStringLiteral("RenderSettingsDock"));
+
+    m_fast = new QPushButton(tr("Fast"));
+    m_fast->setObjectName(QStringLiteral("presetFast"));
+    m_fast->setToolTip(tr("64³ voxels, 5 cones of 75°, step 1.5"));
+    m_balanced = new QPushButton(tr("Balanced"));
+    m_balanced->setObjectName(QStringLiteral("presetBalanced"));
+    m_balanced->setToolTip(tr("128³ voxels, 5 cones of 60°, step 1.0"));
+    m_high = new QPushButton(tr("High"));
+    m_high->setObjectName(QStringLiteral("presetHigh"));
+    m_high->setToolTip(tr("256³ voxels, 9 cones of 45°, step 0.75"));
+    auto* presets = new QHBoxLayout;
+    presets->setContentsMargins(0, 0, 0, 0);
+    presets->addWidget(new QLabel(tr("Preset")));
+    for (QPushButton* button : { m_fast, m_balanced, m_high }) {
+        // Checked shows which preset the current values match; clicking applies it.
+        button->setCheckable(true);
+        presets->addWidget(button);
+    }
+
+    m_resolution = new QComboBox;
+    m_resolution->setObjectName(QStringLiteral("voxelResolutionCombo"));
+    // Not arg("%1³"): QString::arg reads the superscript digit as a placeholder number.
+    for (int res = 32; res <= 512; res *= 2)
+        m_resolution->addItem(QString::number(res) + QStringLiteral("³"), res);
+    m_resolution->setToolTip(
+        tr("Voxel grid cells per side. Memory and voxelization time grow with the cube."));
+    m_conservative = makeCheck(tr("Conservative voxelization"),
+        tr("Mark every voxel a triangle touches, so thin and oblique walls leave no holes"));
+    m_conservative->setObjectName(QStringLiteral("conservativeCheck"));
+    m_anisotropic = makeCheck(tr("Anisotropic mips"),
+        tr("Six direction-dependent mip chains: thin walls stay opaque to wide cones, at three lookups per "
+           "coarse sample"));
+    m_anisotropic->setObjectName(QStringLiteral("anisotropicCheck"));
+
+    m_coneCount = new QSpinBox;
+    m_coneCount->setObjectName(QStringLiteral("diffuseConeCount"));
+    m_coneCount->setRange(1, 32);
+    m_coneCount->setToolTip(tr("Diffuse cones per pixel; 5 = one along the normal and four tilted 45°"));
+    m_diffuseAperture
+        = makeSpin(1.0, 179.0, 1, 5.0, QStringLiteral("°"), tr("Full angle of each diffuse cone"));
+    m_diffuseAperture->setObjectName(QStringLiteral("diffuseAperture"));
+    m_specularAperture = makeSpin(1.0, 179.0, 1, 1.0, QStringLiteral("°"),
+        tr("Narrowest specular cone; glossier lobes are clamped to it"));
+    m_specularAperture->setObjectName(QStringLiteral("specularAperture"));
+    m_step = makeSpin(0.05, 10.0, 2, 0.05, QString(),
+        tr("β: step = cone diameter × β. Smaller is more accurate and slower."));
+    m_step->setObjectName(QStringLiteral("stepFactor"));
+    m_maxDistance = makeSpin(0.0, 10000.0, 2, 0.1, QStringLiteral(" m"),
+        tr("Cone length in metres; \"auto\" uses the voxel grid's diagonal"));
+    m_maxDistance->setObjectName(QStringLiteral("maxDistance"));
+    // The minimum stands for "auto" (stored as a negative distance): a zero-length cone means nothing.
+    m_maxDistance->setSpecialValueText(tr("auto"));
+    m_coneOffset = makeSpin(0.0, 10.0, 2, 0.1, tr(" voxels"),
+        tr("Cone origins start this far along the normal, so a surface does not occlude itself"));
+    m_coneOffset->setObjectName(QStringLiteral("coneOffset"));
+
+    m_direct = makeCheck(tr("Direct light"), tr("Light arriving straight from the lights, with shadow maps"));
+    m_indirectDiffuse
+        = makeCheck(tr("Indirect diffuse"), tr("One-bounce diffuse light from the diffuse cones"));
+    m_indirectSpecular
+        = makeCheck(tr("Indirect specular"), tr("The specular cone, on glossy materials only"));
+    m_ao = makeCheck(tr("Ambient occlusion"), tr("Occlusion from the diffuse cones; view it with View = AO"));
+    m_emission = makeCheck(tr("Emission"), tr("Emissive materials glow and light their surroundings"));
+    m_direct->setObjectName(QStringLiteral("directCheck"));
+    m_indirectDiffuse->setObjectName(QStringLiteral("indirectDiffuseCheck"));
+    m_indirectSpecular->setObjectName(QStringLiteral("indirectSpecularCheck"));
+    m_ao->setObjectName(QStringLiteral("aoCheck"));
+    m_emission->setObjectName(QStringLiteral("emissionCheck"));
+
+    m_shadowMap = new QComboBox;
+    m_shadowMap->setObjectName(QStringLiteral("shadowMapCombo"));
+    for (int size = 256; size <= 4096; size *= 2)
+        m_shadowMap->addItem(QString::number(size) + QStringLiteral("²"), size);
+    m_shadowMap->setToolTip(tr("Shadow map texels per side (per cube face for point lights)"));
+    m_exposure = makeSpin(0.01, 100.0, 2, 0.1, QStringLiteral("×"),
+        tr("Multiplier before the filmic curve (8-bit output only)"));
+    m_exposure->setObjectName(QStringLiteral("exposure"));
+    m_exposure->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    m_view = new QComboBox;
+    m_view->setObjectName(QStringLiteral("viewCombo"));
+    for (const ViewEntry& entry : kViews)
+        m_view->addItem(tr(entry.label), int(entry.view));
+    m_view->setToolTip(tr("Show one term of the image instead of the final result"));
+
+    m_problem = new QLabel;
+    m_problem->setObjectName(QStringLiteral("settingsProblem"));
+    m_problem->setWordWrap(true);
+    m_problem->setStyleSheet(QStringLiteral("color: #d08020;"));
+    m_problem->hide();
+
+    const auto group = [](const QString& title) {
+        auto* box = new QGroupBox(title);
+        auto* form = new QFormLayout(box);
+        form->setContentsMargins(6, 4, 6, 4);
+        form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        return std::pair { box, form };
+    };
+    auto [voxels, voxelForm] = group(tr("Voxels"));
+    voxelForm->addRow(tr("Resolution"), m_resolution);
+    voxelForm->addRow(m_conservative);
+    voxelForm->addRow(m_anisotropic);
+    auto [cones, coneForm] = group(tr("Cones"));
+    coneForm->addRow(tr("Diffuse cones"), m_coneCount);
+    coneForm->addRow(tr("Diffuse aperture"), m_diffuseAperture);
+    coneForm->addRow(tr("Specular aperture"), m_specularAperture);
+    coneForm->addRow(tr("Step factor β"), m_step);
+    coneForm->addRow(tr("Max distance"), m_maxDistance);
+    coneForm->addRow(tr("Cone offset"), m_coneOffset);
+    auto [terms, termForm] = group(tr("Terms"));
+    for (QCheckBox* check : { m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission })
+        termForm->addRow(check);
+    auto [output, outputForm] = group(tr("Output"));
+    outputForm->addRow(tr("Shadow maps"), m_shadowMap);
+    outputForm->addRow(tr("Exposure"), m_exposure);
+    outputForm->addRow(tr("View"), m_view);
+
+    auto* body = new QWidget;
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(presets);
+    for (QGroupBox* box : { voxels, cones, terms, output })
+        layout->addWidget(box);
+    layout->addWidget(m_problem);
+    layout->addStretch();
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(body);
+    setWidget(scroll);
+
+    connect(m_fast, &QPushButton::clicked, this, [this] { applyPreset(Preset::Fast); });
+    connect(m_balanced, &QPushButton::clicked, this, [this] { applyPreset(Preset::Balanced); });
+    connect(m_high, &QPushButton::clicked, this, [this] { applyPreset(Preset::High); });
+
+    connect(m_resolution, &QComboBox::currentIndexChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const int res = m_resolution->itemData(row).toInt();
+        edit([res](render::RenderSettings& s) { s.voxelResolution = res; });
+    });
+    connect(m_shadowMap, &QComboBox::currentIndexChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const int size = m_shadowMap->itemData(row).toInt();
+        edit([size](render::RenderSettings& s) { s.shadowMapSize = size; });
+    });
+    connect(m_view, &QComboBox::currentIndexChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const auto view = DebugView(m_view->itemData(row).toInt());
+        edit([view](render::RenderSettings& s) { s.view = view; });
+    });
+    connect(m_coneCount, &QSpinBox::valueChanged, this,
+        [this](int v) { edit([v](render::RenderSettings& s) { s.diffuseConeCount = v; }); });
+
+    const auto bindSpin = [this](QDoubleSpinBox* spin, float render::RenderSettings::*field) {
+        connect(spin, &QDoubleSpinBox::valueChanged, this,
+            [this, field](double v) { edit([&](render::RenderSettings& s) { s.*field = float(v); }); });
+    };
+    bindSpin(m_diffuseAperture, &render::RenderSettings::diffuseApertureDeg);
+    bindSpin(m_specularAperture, &render::RenderSettings::specularApertureDeg);
+    bindSpin(m_step, &render::RenderSettings::stepFactor);
+    bindSpin(m_coneOffset, &render::RenderSettings::coneOffsetVoxels);
+    bindSpin(m_exposure, &render::RenderSettings::exposure);
+    connect(m_maxDistance, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit([&](render::RenderSettings& s) {
+            s.maxDistance = v <= m_maxDistance->minimum() ? -1.0f : float(v);
+        });
+    });
+
+    const auto bindCheck = [this](QCheckBox* check, bool render::RenderSettings::*field) {
+        connect(check, &QCheckBox::toggled, this,
+            [this, field](bool on) { edit([&](render::RenderSettings& s) { s.*field = on; }); });
+    };
+    bindCheck(m_conservative, &render::RenderSettings::conservativeVoxelization);
+    bindCheck(m_anisotropic, &render::RenderSettings::anisotropicMips);
+    bindCheck(m_direct, &render::RenderSettings::direct);
+    bindCheck(m_indirectDiffuse, &render::RenderSettings::indirectDiffuse);
+    bindCheck(m_indirectSpecular, &render::RenderSettings::indirectSpecular);
+    bindCheck(m_ao, &render::RenderSettings::ambientOcclusion);
+    bindCheck(m_emission, &render::RenderSettings::emission);
+
+    setDocument(nullptr);
+}
+
+void RenderSettingsDock::setDocument(doc::Document* document)
+{
+    disconnect(m_changedConnection);
+    m_document = document;
+    if (m_document)
+        m_changedConnection
+            = connect(m_document, &doc::Document::changed, this, &RenderSettingsDock::onDocumentChanged);
+    load();
+}
+
+render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const render::RenderSettings& base)
+{
+    render::RenderSettings s = base;
+    switch (preset) {
+    case Preset::Fast:
+        // Coarse grid and wide cones: few, long steps; fine for layout work.
+        s.voxelResolution = 64;
+        s.diffuseConeCount = 5;
+        s.diffuseApertureDeg = 75.0f;
+        s.stepFactor = 1.5f;
+        break;
+    case Preset::Balanced:
+        s.voxelResolution = 128;
+        s.diffuseConeCount = 5;
+        s.diffuseApertureDeg = 60.0f;
+        s.stepFactor = 1.0f;
+        break;
+    case Preset::High:
+        // Nine narrower cones still cover the hemisphere at 45 degrees each.
+        s.voxelResolution = 256;
+        s.diffuseConeCount = 9;
+        s.diffuseApertureDeg = 45.0f;
+        s.stepFactor = 0.75f;
+        break;
+    }
+    return s;
+}
+
+void RenderSettingsDock::applyPreset(Preset preset)
+{
+    if (!m_document)
+        return;
+    const render::RenderSettings current = m_document->state().settings;
+    const render::RenderSettings next = presetSettings(preset, current);
+    if (!sameSettings(current, next))
+        m_document->setSettings(next);
+    load(); // The preset buttons' checked state follows the values, whether or not anything changed.
+}
+
+void RenderSettingsDock::edit(const std::function<void(render::RenderSettings&)>& change)
+{
+    if (!m_document)
+        return;
+    const render::RenderSettings current = m_document->state().settings;
+    render::RenderSettings next = current;
+    change(next);
+    if (const std::string problem = next.validate(); !problem.empty()) {
+        m_problem->setText(QString::fromStdString(problem));
+        m_problem->show();
+        load();
+        return;
+    }
+    m_problem->hide();
+    if (sameSettings(current, next))
+        return;
+    m_applying = true;
+    m_document->setSettings(next);
+    m_applying = false;
+    load(); // Cheap, and keeps the preset buttons in step; equal values are not rewritten.
+}
+
+void RenderSettingsDock::onDocumentChanged(const doc::ChangeEvent& event)
+{
+    using Kind = doc::ChangeEvent::Kind;
+    if (!m_applying && (event.kind == Kind::Settings || event.kind == Kind::Reset))
+        load();
+}
+
+void RenderSettingsDock::load()
+{
+    widget()->setEnabled(m_document);
+    if (!m_document)
+        return;
+    const render::RenderSettings& s = m_document->state().settings;
+
+    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_coneCount,
+        m_diffuseAperture, m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct,
+        m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_fast,
+        m_balanced, m_high };
+    std::vector<std::unique_ptr<QSignalBlocker>> blockers;
+    for (QWidget* w : editors)
+        blockers.push_back(std::make_unique<QSignalBlocker>(w));
+
+    selectIntItem(m_resolution, s.voxelResolution, QString::number(s.voxelResolution) + QStringLiteral("³"));
+    m_conservative->setChecked(s.conservativeVoxelization);
+    m_anisotropic->setChecked(s.anisotropicMips);
+    if (m_coneCount->value() != s.diffuseConeCount)
+        m_coneCount->setValue(s.diffuseConeCount);
+    setSpinValue(m_diffuseAperture, double(s.diffuseApertureDeg));
+    setSpinValue(m_specularAperture, double(s.specularApertureDeg));
+    setSpinValue(m_step, double(s.stepFactor));
+    setSpinValue(m_maxDistance, s.maxDistance < 0.0f ? m_maxDistance->minimum() : double(s.maxDistance));
+    setSpinValue(m_coneOffset, double(s.coneOffsetVoxels));
+    m_direct->setChecked(s.direct);
+    m_indirectDiffuse->setChecked(s.indirectDiffuse);
+    m_indirectSpecular->setChecked(s.indirectSpecular);
+    m_ao->setChecked(s.ambientOcclusion);
+    m_emission->setChecked(s.emission);
+    selectIntItem(m_shadowMap, s.shadowMapSize, QString::number(s.shadowMapSize) + QStringLiteral("²"));
+    setSpinValue(m_exposure, double(s.exposure));
+    m_view->setCurrentIndex(m_view->findData(int(s.view)));
+
+    m_fast->setChecked(sameSettings(s, presetSettings(Preset::Fast, s)));
+    m_balanced->setChecked(sameSettings(s, presetSettings(Preset::Balanced, s)));
+    m_high->setChecked(sameSettings(s, presetSettings(Preset::High, s)));
+}
+
+} // namespace vct::ui

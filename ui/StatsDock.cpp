@@ -1,0 +1,116 @@
+#include "StatsDock.h"
+
+#include "core/FrameStats.h"
+
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace vct::ui {
+
+namespace {
+
+enum Column { PassColumn, ActionColumn, ReasonColumn, GpuColumn, ColumnCount };
+
+QTableWidgetItem* makeItem(const QString& text, Qt::Alignment alignment = Qt::AlignLeft | Qt::AlignVCenter)
+{
+    auto* item = new QTableWidgetItem(text);
+    item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    item->setTextAlignment(alignment);
+    item->setToolTip(text);
+    return item;
+}
+
+QLabel* makeValueLabel(const QString& objectName)
+{
+    auto* label = new QLabel(QStringLiteral("—"));
+    label->setObjectName(objectName);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return label;
+}
+
+} // namespace
+
+StatsDock::StatsDock(QWidget* parent)
+    : QDockWidget(tr("Stats"), parent)
+{
+    setObjectName(QStringLiteral("StatsDock"));
+    auto* body = new QWidget(this);
+
+    m_table = new QTableWidget(0, ColumnCount, body);
+    m_table->setObjectName(QStringLiteral("passTable"));
+    m_table->setHorizontalHeaderLabels({ tr("Pass"), tr("Action"), tr("Reason"), tr("GPU (ms)") });
+    m_table->horizontalHeaderItem(ActionColumn)->setToolTip(tr("run, reused (inputs unchanged) or skipped"));
+    m_table->horizontalHeaderItem(GpuColumn)->setToolTip(tr("GPU time from timer queries; 0 unless it ran"));
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setAlternatingRowColors(true);
+    m_table->setWordWrap(false);
+    QHeaderView* header = m_table->horizontalHeader();
+    header->setSectionResizeMode(PassColumn, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(ActionColumn, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(ReasonColumn, QHeaderView::Stretch);
+    header->setSectionResizeMode(GpuColumn, QHeaderView::ResizeToContents);
+
+    m_total = makeValueLabel(QStringLiteral("totalGpuLabel"));
+    m_memory = makeValueLabel(QStringLiteral("voxelMemoryLabel"));
+    m_grid = makeValueLabel(QStringLiteral("voxelGridLabel"));
+    m_frame = makeValueLabel(QStringLiteral("frameSizeLabel"));
+    auto* form = new QFormLayout;
+    form->setContentsMargins(0, 0, 0, 0);
+    form->addRow(tr("GPU total"), m_total);
+    form->addRow(tr("Voxel memory"), m_memory);
+    form->addRow(tr("Voxel grid"), m_grid);
+    form->addRow(tr("Frame"), m_frame);
+
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(form);
+    layout->addWidget(m_table);
+    setWidget(body);
+}
+
+void StatsDock::showStats(const render::FrameStats& stats)
+{
+    // Updating in place instead of clearing avoids re-creating every item (and flicker) at frame rate.
+    m_table->setRowCount(int(stats.passes.size()));
+    for (int row = 0; row < int(stats.passes.size()); ++row) {
+        const render::PassStats& pass = stats.passes[std::size_t(row)];
+        const bool ran = pass.action == "run";
+        const QString cells[ColumnCount] = { QString::fromStdString(pass.name),
+            QString::fromStdString(pass.action), QString::fromStdString(pass.reason),
+            ran ? QString::number(pass.gpuMs, 'f', 3) : QStringLiteral("—") };
+        for (int column = 0; column < ColumnCount; ++column) {
+            QTableWidgetItem* item = m_table->item(row, column);
+            if (!item) {
+                const Qt::Alignment alignment = column == GpuColumn ? Qt::AlignRight | Qt::AlignVCenter
+                                                                    : Qt::AlignLeft | Qt::AlignVCenter;
+                m_table->setItem(row, column, makeItem(cells[column], alignment));
+            } else if (item->text() != cells[column]) {
+                item->setText(cells[column]);
+                item->setToolTip(cells[column]);
+            }
+            // Passes that did no work this frame read as greyed out, as in profilers.
+            m_table->item(row, column)
+                ->setForeground(ran ? palette().brush(QPalette::Text)
+                                    : palette().brush(QPalette::Disabled, QPalette::Text));
+        }
+    }
+
+    m_total->setText(tr("%1 ms").arg(stats.totalGpuMs, 0, 'f', 3));
+    m_memory->setText(tr("%1 MiB").arg(double(stats.voxelBytes) / (1024.0 * 1024.0), 0, 'f', 1));
+    if (stats.voxelResolution > 0)
+        m_grid->setText(tr("%1, voxel %2 cm")
+                            .arg(QString::number(stats.voxelResolution) + QStringLiteral("³"))
+                            .arg(double(stats.voxelSize) * 100.0, 0, 'f', 2));
+    else
+        m_grid->setText(QStringLiteral("—"));
+    m_frame->setText(
+        stats.width > 0 ? tr("%1 × %2 px").arg(stats.width).arg(stats.height) : QStringLiteral("—"));
+}
+
+} // namespace vct::ui

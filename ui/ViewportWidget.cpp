@@ -1,0 +1,379 @@
+#include "ViewportWidget.h"
+
+#include "CameraController.h"
+
+#include "core/Renderer.h"
+#include "document/Document.h"
+#include "sync/NodePicker.h"
+#include "sync/SceneSync.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+
+#include <cmath>
+#include <limits>
+
+namespace vct::ui {
+
+namespace {
+
+void* qtProcAddress(const char* name)
+{
+    QOpenGLContext* context = QOpenGLContext::currentContext();
+    return context ? reinterpret_cast<void*>(context->getProcAddress(name)) : nullptr;
+}
+
+constexpr float kOrbitDegreesPerPixel = 0.3f;
+
+} // namespace
+
+ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
+    : QOpenGLWidget(parent)
+    , m_document(document)
+    , m_sync(std::make_unique<sync::SceneSync>(document))
+{
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setMinimumSize(160, 120);
+    m_refineTimer.setSingleShot(true);
+    m_refineTimer.setInterval(300);
+    connect(&m_refineTimer, &QTimer::timeout, this, [this] {
+        m_interactive = false;
+        update();
+    });
+    m_flyTimer.setInterval(30);
+    connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
+    // Any document edit changes the picture; camera edits arrive here too.
+    connect(document, &doc::Document::changed, this, [this] { update(); });
+}
+
+ViewportWidget::~ViewportWidget()
+{
+    releaseGl();
+}
+
+void ViewportWidget::initializeGL()
+{
+    // A dock floating or the window moving to another screen destroys the context: drop every GL object
+    // while it is still current, and build anew in the next initializeGL.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    try {
+        m_renderer = std::make_unique<render::Renderer>(qtProcAddress);
+        m_sync->apply(*m_renderer, true);
+        m_error.clear();
+    } catch (const std::exception& e) {
+        m_renderer.reset();
+        m_error = QString::fromUtf8(e.what());
+        emit rendererFailed(m_error);
+    }
+}
+
+void ViewportWidget::releaseGl()
+{
+    if (!m_renderer)
+        return;
+    makeCurrent();
+    m_renderer.reset();
+    doneCurrent();
+}
+
+QRect ViewportWidget::traceRect() const
+{
+    const int w = int(std::lround(width() * devicePixelRatioF())), h = int(std::lround(height() * devicePixelRatioF()));
+    return m_inspector.enabled ? QRect(0, 0, w / 2, h) : QRect(0, 0, w, h);
+}
+
+QRect ViewportWidget::inspectorRect() const
+{
+    const int w = int(std::lround(width() * devicePixelRatioF())), h = int(std::lround(height() * devicePixelRatioF()));
+    return QRect(w / 2, 0, w - w / 2, h);
+}
+
+void ViewportWidget::paintGL()
+{
+    if (!m_renderer)
+        return;
+    try {
+        m_sync->apply(*m_renderer);
+        const QRect trace = traceRect();
+        const float scale = m_interactive ? m_interactiveScale : 1.0f;
+        const int w = std::max(1, int(std::lround(trace.width() * scale)));
+        const int h = std::max(1, int(std::lround(trace.height() * scale)));
+        const render::FrameStats stats = m_renderer->renderFrame(m_document->state().camera, w, h);
+        const float exposure = m_document->state().settings.exposure;
+        m_renderer->present(defaultFramebufferObject(), trace.x(), trace.y(), trace.width(), trace.height(), exposure);
+        m_levelCount = m_renderer->voxelLevelCount();
+        if (m_inspector.enabled) {
+            const QRect right = inspectorRect();
+            const int level = std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1));
+            m_lastCubeCount = m_renderer->drawVoxelCubes(m_document->state().camera, level, m_inspector.channel,
+                defaultFramebufferObject(), right.x(), right.y(), right.width(), right.height(), exposure);
+            emit cubesDrawn(int(m_lastCubeCount), m_levelCount);
+        }
+        emit frameRendered(stats);
+    } catch (const std::exception& e) {
+        m_error = QString::fromUtf8(e.what());
+        emit rendererFailed(m_error);
+    }
+}
+
+render::RadianceImage ViewportWidget::renderFullFrame(int width, int height)
+{
+    if (!m_renderer)
+        return {};
+    makeCurrent();
+    m_sync->apply(*m_renderer);
+    m_renderer->renderFrame(m_document->state().camera, width, height);
+    render::RadianceImage image = m_renderer->readFrame();
+    doneCurrent();
+    update(); // the next paint renders at the widget's own size again
+    return image;
+}
+
+std::size_t ViewportWidget::occupiedVoxelCount()
+{
+    if (!m_renderer || m_levelCount == 0)
+        return 0;
+    makeCurrent();
+    int size = 0;
+    const std::vector<float> albedo = m_renderer->readVoxels("albedo", 0, size);
+    doneCurrent();
+    std::size_t count = 0;
+    for (std::size_t i = 3; i < albedo.size(); i += 4)
+        count += albedo[i] > 0.0f ? 1 : 0;
+    return count;
+}
+
+void ViewportWidget::setInspector(const InspectorSettings& settings)
+{
+    if (settings == m_inspector)
+        return;
+    m_inspector = settings;
+    update();
+}
+
+void ViewportWidget::startInteraction()
+{
+    m_interactive = true;
+    m_refineTimer.start();
+    update();
+}
+
+void ViewportWidget::setCamera(const render::Camera& camera)
+{
+    m_document->setCamera(camera);
+    startInteraction();
+}
+
+bool ViewportWidget::rayThrough(const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const
+{
+    const QRect rect = inspectorHalf ? inspectorRect() : traceRect();
+    const float dpr = float(devicePixelRatioF());
+    const float x = float(position.x()) * dpr - float(rect.x());
+    const float y = float(position.y()) * dpr;
+    if (x < 0.0f || x >= float(rect.width()) || rect.height() <= 0)
+        return false;
+    const render::Camera& camera = m_document->state().camera;
+    const float aspect = float(rect.width()) / float(rect.height());
+    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float ndcX = 2.0f * (x + 0.5f) / float(rect.width()) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (y + 0.5f) / float(rect.height());
+    origin = camera.position;
+    direction = glm::normalize(forward + right * (ndcX * tanHalf * aspect) + up * (ndcY * tanHalf));
+    return true;
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event)
+{
+    m_lastMouse = event->position().toPoint();
+    m_pressPosition = m_lastMouse;
+    m_dragButton = event->button();
+    m_movingNode = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier)
+        && m_document->selectedNode() >= 0;
+    setFocus();
+}
+
+void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint position = event->position().toPoint();
+    const QPoint delta = position - m_lastMouse;
+    m_lastMouse = position;
+    const render::Camera& camera = m_document->state().camera;
+    if (m_dragButton == Qt::NoButton) {
+        if (m_inspector.enabled)
+            hoverVoxel(position);
+        return;
+    }
+    if (m_movingNode) {
+        // Move the selected node in the view plane, scaled so it follows the cursor at its distance.
+        const int node = m_document->selectedNode();
+        if (node < 0 || std::size_t(node) >= m_document->state().nodes.size())
+            return;
+        doc::NodeTransform transform = m_document->state().nodes[std::size_t(node)].transform;
+        const glm::vec3 center = glm::vec3(m_document->nodeWorldTransform(node)[3]);
+        const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+        const glm::vec3 up = glm::cross(right, forward);
+        const float distance = std::max(glm::dot(center - camera.position, forward), 0.1f);
+        const float metresPerPixel = 2.0f * distance * std::tan(glm::radians(camera.fovYDeg) * 0.5f) / float(std::max(1, height()));
+        transform.translation += (right * float(delta.x()) - up * float(delta.y())) * metresPerPixel;
+        m_document->setNodeTransform(node, transform);
+        startInteraction();
+        return;
+    }
+    const bool pan = m_dragButton == Qt::MiddleButton || (event->modifiers() & Qt::ShiftModifier);
+    if (pan)
+        setCamera(CameraController::pan(camera, -float(delta.x()) / float(std::max(1, height())),
+            float(delta.y()) / float(std::max(1, height()))));
+    else if (m_dragButton == Qt::LeftButton || m_dragButton == Qt::RightButton)
+        setCamera(CameraController::orbit(camera, float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
+{
+    const bool click = (event->position().toPoint() - m_pressPosition).manhattanLength() < 4;
+    if (click && event->button() == Qt::LeftButton && !m_movingNode) {
+        glm::vec3 origin, direction;
+        const bool inInspector = m_inspector.enabled && !rayThrough(event->position().toPoint(), origin, direction, false);
+        if (rayThrough(event->position().toPoint(), origin, direction, inInspector))
+            m_document->setSelectedNode(sync::pickNode(*m_document, origin, direction).node);
+    }
+    m_dragButton = Qt::NoButton;
+    m_movingNode = false;
+}
+
+void ViewportWidget::wheelEvent(QWheelEvent* event)
+{
+    setCamera(CameraController::zoom(m_document->state().camera, float(event->angleDelta().y()) / 120.0f));
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event)
+{
+    switch (event->key()) {
+    case Qt::Key_F:
+        frameSelected();
+        return;
+    case Qt::Key_W:
+    case Qt::Key_A:
+    case Qt::Key_S:
+    case Qt::Key_D:
+    case Qt::Key_Q:
+    case Qt::Key_E:
+        if (!event->isAutoRepeat()) {
+            m_flyKeys.insert(event->key());
+            if (!m_flyTimer.isActive()) {
+                m_flyClock.start();
+                m_flyTimer.start();
+            }
+        }
+        return;
+    default:
+        QOpenGLWidget::keyPressEvent(event);
+    }
+}
+
+void ViewportWidget::keyReleaseEvent(QKeyEvent* event)
+{
+    if (!event->isAutoRepeat())
+        m_flyKeys.remove(event->key());
+    if (m_flyKeys.isEmpty())
+        m_flyTimer.stop();
+    QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void ViewportWidget::focusOutEvent(QFocusEvent* event)
+{
+    m_flyKeys.clear();
+    m_flyTimer.stop();
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+void ViewportWidget::flyStep()
+{
+    const float seconds = float(m_flyClock.restart()) * 1e-3f;
+    // Speed scales with the scene: cross a tenth of its size per second.
+    render::Aabb bounds;
+    for (std::size_t i = 0; i < m_document->state().nodes.size(); ++i)
+        bounds.extend(glm::vec3(m_document->nodeWorldTransform(int(i))[3]));
+    const float speed = std::max(1.0f, glm::length(bounds.size())) * 0.25f * seconds;
+    float forward = 0, right = 0, up = 0;
+    forward += m_flyKeys.contains(Qt::Key_W) ? speed : 0.0f;
+    forward -= m_flyKeys.contains(Qt::Key_S) ? speed : 0.0f;
+    right += m_flyKeys.contains(Qt::Key_D) ? speed : 0.0f;
+    right -= m_flyKeys.contains(Qt::Key_A) ? speed : 0.0f;
+    up += m_flyKeys.contains(Qt::Key_E) ? speed : 0.0f;
+    up -= m_flyKeys.contains(Qt::Key_Q) ? speed : 0.0f;
+    setCamera(CameraController::fly(m_document->state().camera, forward, right, up));
+}
+
+void ViewportWidget::frameSelected()
+{
+    const int node = m_document->selectedNode();
+    render::Aabb box;
+    const auto& nodes = m_document->state().nodes;
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        if ((node >= 0 && int(n) != node) || !nodes[n].visible)
+            continue;
+        const render::Scene& source = m_document->sourceScene(nodes[n].source);
+        if (nodes[n].mesh < 0 || std::size_t(nodes[n].mesh) >= source.meshes.size())
+            continue;
+        const glm::mat4 world = m_document->nodeWorldTransform(int(n));
+        for (const glm::vec3& p : source.meshes[std::size_t(nodes[n].mesh)].positions)
+            box.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    }
+    setCamera(CameraController::frame(m_document->state().camera, box));
+}
+
+void ViewportWidget::hoverVoxel(const QPoint& position)
+{
+    glm::vec3 origin, direction;
+    if (!m_renderer || !rayThrough(position, origin, direction, true)) {
+        emit voxelHovered(QString());
+        return;
+    }
+    makeCurrent();
+    const render::VoxelListing& listing = m_renderer->listVoxels(
+        std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1)), m_inspector.channel);
+    doneCurrent();
+    float best = std::numeric_limits<float>::max();
+    const render::VoxelSample* hit = nullptr;
+    for (const render::VoxelSample& sample : listing.samples) {
+        const glm::vec3 lo = listing.origin + glm::vec3(sample.coord) * listing.cellSize;
+        const glm::vec3 hi = lo + glm::vec3(listing.cellSize);
+        float t0 = 0.0f, t1 = best;
+        for (int axis = 0; axis < 3 && t0 <= t1; ++axis) {
+            float a = (lo[axis] - origin[axis]) / direction[axis], b = (hi[axis] - origin[axis]) / direction[axis];
+            if (a > b)
+                std::swap(a, b);
+            t0 = std::max(t0, a);
+            t1 = std::min(t1, b);
+        }
+        if (t0 <= t1 && t0 < best) {
+            best = t0;
+            hit = &sample;
+        }
+    }
+    if (!hit) {
+        emit voxelHovered(QString());
+        return;
+    }
+    emit voxelHovered(QStringLiteral("level %1 voxel (%2, %3, %4): %5 %6 %7, opacity %8")
+                          .arg(listing.level)
+                          .arg(hit->coord.x)
+                          .arg(hit->coord.y)
+                          .arg(hit->coord.z)
+                          .arg(double(hit->value.r), 0, 'g', 4)
+                          .arg(double(hit->value.g), 0, 'g', 4)
+                          .arg(double(hit->value.b), 0, 'g', 4)
+                          .arg(double(hit->value.a), 0, 'g', 3));
+}
+
+} // namespace vct::ui

@@ -1,0 +1,86 @@
+#include "VoxelInspectorDock.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QVBoxLayout>
+
+namespace vct::ui {
+
+VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
+    : QDockWidget(tr("Voxel inspector"), parent)
+{
+    setObjectName(QStringLiteral("VoxelInspectorDock"));
+    auto* body = new QWidget(this);
+    auto* form = new QFormLayout(body);
+    m_enabled = new QCheckBox(tr("Show voxels beside the image"), body);
+    m_enabled->setToolTip(tr("Splits the viewport: cone-traced image on the left, voxels as cubes on the right, same camera."));
+    form->addRow(m_enabled);
+    m_level = new QSlider(Qt::Horizontal, body);
+    m_level->setRange(0, 0);
+    m_level->setPageStep(1);
+    m_level->setTickPosition(QSlider::TicksBelow);
+    m_level->setToolTip(tr("Mip level: 0 is the finest grid; each level halves the resolution."));
+    m_levelLabel = new QLabel(tr("level 0"), body);
+    auto* levelRow = new QHBoxLayout;
+    levelRow->addWidget(m_level, 1);
+    levelRow->addWidget(m_levelLabel);
+    form->addRow(tr("Mip level"), levelRow);
+    m_channel = new QComboBox(body);
+    m_channel->addItem(tr("Albedo"), int(render::VoxelChannel::Albedo));
+    m_channel->addItem(tr("Radiance"), int(render::VoxelChannel::Radiance));
+    m_channel->addItem(tr("Opacity"), int(render::VoxelChannel::Opacity));
+    m_channel->addItem(tr("Normal"), int(render::VoxelChannel::Normal));
+    m_channel->addItem(tr("Emission"), int(render::VoxelChannel::Emission));
+    m_channel->setCurrentIndex(1);
+    form->addRow(tr("Channel"), m_channel);
+    m_count = new QLabel(tr("Cubes drawn: -"), body);
+    form->addRow(m_count);
+    m_hover = new QLabel(body);
+    m_hover->setWordWrap(true);
+    m_hover->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(m_hover);
+    setWidget(body);
+
+    connect(m_enabled, &QCheckBox::toggled, this, &VoxelInspectorDock::emitSettings);
+    connect(m_level, &QSlider::valueChanged, this, &VoxelInspectorDock::emitSettings);
+    connect(m_channel, &QComboBox::currentIndexChanged, this, &VoxelInspectorDock::emitSettings);
+}
+
+InspectorSettings VoxelInspectorDock::settings() const
+{
+    return {m_enabled->isChecked(), m_level->value(), render::VoxelChannel(m_channel->currentData().toInt())};
+}
+
+void VoxelInspectorDock::setSettings(const InspectorSettings& settings)
+{
+    m_enabled->setChecked(settings.enabled);
+    m_level->setValue(settings.level);
+    m_channel->setCurrentIndex(m_channel->findData(int(settings.channel)));
+}
+
+void VoxelInspectorDock::emitSettings()
+{
+    m_levelLabel->setText(tr("level %1").arg(m_level->value()));
+    emit settingsChanged(settings());
+}
+
+void VoxelInspectorDock::setLevelCount(int levels)
+{
+    m_level->setMaximum(std::max(0, levels - 1));
+}
+
+void VoxelInspectorDock::setCubeCount(int count, int levels)
+{
+    setLevelCount(levels);
+    m_count->setText(tr("Cubes drawn: %1").arg(count));
+}
+
+void VoxelInspectorDock::setHoverText(const QString& text)
+{
+    m_hover->setText(text);
+}
+
+} // namespace vct::ui
