@@ -106,9 +106,11 @@ void MainWindow::buildDocks()
     addDockWidget(Qt::RightDockWidgetArea, m_materialDock);
     addDockWidget(Qt::RightDockWidgetArea, m_settingsDock);
     addDockWidget(Qt::RightDockWidgetArea, m_inspectorDock);
-    addDockWidget(Qt::BottomDockWidgetArea, m_statsDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_statsDock);
     tabifyDockWidget(m_materialDock, m_settingsDock);
+    tabifyDockWidget(m_inspectorDock, m_statsDock);
     m_materialDock->raise();
+    m_inspectorDock->raise();
 
     connect(m_sceneDock, &SceneGraphDock::lightSelected, m_lightDock, &LightDock::setCurrentLight);
     connect(m_inspectorDock, &VoxelInspectorDock::settingsChanged, m_viewport, &ViewportWidget::setInspector);

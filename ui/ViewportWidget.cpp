@@ -62,6 +62,7 @@ void ViewportWidget::initializeGL()
     // A dock floating or the window moving to another screen destroys the context: drop every GL object
     // while it is still current, and build anew in the next initializeGL.
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    ++m_contextGeneration;
     try {
         m_renderer = std::make_unique<render::Renderer>(qtProcAddress);
         m_sync->apply(*m_renderer, true);

@@ -52,6 +52,8 @@ public:
     /** Voxels of level 0 whose opacity is non-zero, counted from the renderer's albedo volume. */
     std::size_t occupiedVoxelCount();
     QString lastError() const { return m_error; }
+    /** How many times a GL context was set up for this widget (it is recreated when the window changes). */
+    int contextGeneration() const { return m_contextGeneration; }
     bool isInteractive() const { return m_interactive; }
 
 public slots:
@@ -102,6 +104,7 @@ private:
     std::size_t m_lastCubeCount = 0;
     int m_levelCount = 0;
     QString m_error;
+    int m_contextGeneration = 0;
 };
 
 } // namespace vct::ui

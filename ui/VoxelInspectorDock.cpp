@@ -19,7 +19,8 @@ VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
     m_enabled->setToolTip(tr("Splits the viewport: cone-traced image on the left, voxels as cubes on the right, same camera."));
     form->addRow(m_enabled);
     m_level = new QSlider(Qt::Horizontal, body);
-    m_level->setRange(0, 0);
+    // Room for a 512^3 grid's ten levels until the renderer reports how many there are.
+    m_level->setRange(0, 9);
     m_level->setPageStep(1);
     m_level->setTickPosition(QSlider::TicksBelow);
     m_level->setToolTip(tr("Mip level: 0 is the finest grid; each level halves the resolution."));

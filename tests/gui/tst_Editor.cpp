@@ -10,7 +10,12 @@
 #include "document/DocumentState.h"
 #include "imageio/ImageMetrics.h"
 
+#include "imageio/ImageFile.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QComboBox>
 #include <QLabel>
 #include <QSignalSpy>
@@ -45,6 +50,10 @@ private slots:
     void viewportShowsAnImage();
     void emissiveFlagBrightensAndUndoRestores();
     void inspectorCountsMatchTheVoxels();
+    void clickSelectsTheObjectUnderTheCursor();
+    void exportWritesImages();
+    void viewportSurvivesContextRecreation();
+    void inspectorScreenshot();
     void saveCloseOpenGivesTheSameDocument();
     void badFilesLeaveTheDocumentAlone();
 
@@ -155,6 +164,94 @@ void EditorTest::inspectorCountsMatchTheVoxels()
         QVERIFY(count > 0);
         previous = count;
     }
+    inspector->enabledBox()->setChecked(false);
+}
+
+void EditorTest::clickSelectsTheObjectUnderTheCursor()
+{
+    doc::Document* document = m_window->document();
+    ui::ViewportWidget* viewport = m_window->viewport();
+    int shortBox = -1;
+    for (std::size_t i = 0; i < document->state().nodes.size(); ++i)
+        if (document->state().nodes[i].name.startsWith(QStringLiteral("shortbox")))
+            shortBox = int(i);
+    QVERIFY(shortBox >= 0);
+    // Project the short box's centre with the viewport's camera and click there.
+    const render::Scene& source = document->sourceScene(document->state().nodes[std::size_t(shortBox)].source);
+    render::Aabb box;
+    const glm::mat4 world = document->nodeWorldTransform(shortBox);
+    for (const glm::vec3& p : source.meshes[std::size_t(document->state().nodes[std::size_t(shortBox)].mesh)].positions)
+        box.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    const render::Camera& camera = document->state().camera;
+    const glm::mat4 view = glm::lookAt(camera.position, camera.lookAt, camera.up);
+    const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg),
+        float(viewport->width()) / float(viewport->height()), 0.01f, 100.0f);
+    const glm::vec3 p = glm::project(box.center(), view, projection, glm::vec4(0, 0, viewport->width(), viewport->height()));
+    const QPoint click(int(p.x), viewport->height() - 1 - int(p.y));
+    document->setSelectedNode(-1);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, click);
+    QCOMPARE(document->selectedNode(), shortBox);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2)); // the black outside the box
+    QVERIFY(document->selectedNode() != shortBox);
+}
+
+void EditorTest::exportWritesImages()
+{
+    const QString png = test::outputDir() + QStringLiteral("/editor-export.png");
+    const QString pfm = test::outputDir() + QStringLiteral("/editor-export.pfm");
+    QFile::remove(png);
+    QFile::remove(pfm);
+    QVERIFY(m_window->exportImage(png));
+    QVERIFY(m_window->exportImage(pfm));
+    QVERIFY(!QImage(png).isNull());
+    std::string error;
+    const auto linear = io::ImageFile::read(pfm.toStdString(), &error);
+    QVERIFY2(linear, error.c_str());
+    QCOMPARE(io::ImageMetrics::nonFiniteCount(*linear), std::size_t(0));
+    QVERIFY(io::ImageMetrics::meanLuminance(*linear) > 0.0);
+}
+
+// Floating a panel or moving to another screen destroys the GL context: the viewport must rebuild.
+void EditorTest::viewportSurvivesContextRecreation()
+{
+    ui::ViewportWidget viewport(m_window->document());
+    QSignalSpy frames(&viewport, &ui::ViewportWidget::frameRendered);
+    viewport.resize(160, 120);
+    viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&viewport));
+    QVERIFY(frames.count() > 0 || frames.wait(20000));
+    const int generation = viewport.contextGeneration();
+    QDockWidget dock;
+    dock.setWidget(&viewport); // a new top-level: new window, new context
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    frames.clear();
+    viewport.update();
+    QVERIFY(frames.wait(20000));
+    QVERIFY(viewport.contextGeneration() > generation); // the old context went away and GL was rebuilt
+    QVERIFY2(viewport.lastError().isEmpty(), qPrintable(viewport.lastError()));
+    const QImage image = viewport.grabFramebuffer();
+    QVERIFY(!image.isNull());
+    int lit = 0;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2)
+            lit += qGray(image.pixel(x, y)) > 30 ? 1 : 0;
+    QVERIFY(lit > 50);
+    dock.setWidget(nullptr);
+    viewport.setParent(nullptr);
+}
+
+void EditorTest::inspectorScreenshot()
+{
+    ui::VoxelInspectorDock* inspector = m_window->inspectorDock();
+    inspector->enabledBox()->setChecked(true);
+    inspector->channelBox()->setCurrentIndex(inspector->channelBox()->findData(int(render::VoxelChannel::Radiance)));
+    inspector->levelSlider()->setValue(2);
+    QVERIFY(waitForFrame());
+    QVERIFY(m_window->viewport()->lastCubeCount() > 0);
+    const QString screenshot = test::outputDir() + QStringLiteral("/editor-inspector.png");
+    QVERIFY(m_window->grab().save(screenshot));
+    qInfo("screenshot with the voxel inspector at level 2: %s", qPrintable(screenshot));
     inspector->enabledBox()->setChecked(false);
 }
 
