@@ -225,7 +225,20 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         const glm::vec3 up = glm::cross(right, forward);
         const float distance = std::max(glm::dot(center - camera.position, forward), 0.1f);
         const float metresPerPixel = 2.0f * distance * std::tan(glm::radians(camera.fovYDeg) * 0.5f) / float(std::max(1, height()));
-        transform.translation += (right * float(delta.x()) - up * float(delta.y())) * metresPerPixel;
+        glm::vec3 move = (right * float(delta.x()) - up * float(delta.y())) * metresPerPixel;
+        // Holding X, Y or Z keeps the move on that world axis, as in Blender's G X / G Y / G Z.
+        for (const auto& [key, axis] : {std::pair{Qt::Key_X, 0}, std::pair{Qt::Key_Y, 1}, std::pair{Qt::Key_Z, 2}})
+            if (m_flyKeys.contains(key)) {
+                glm::vec3 unit(0.0f);
+                unit[axis] = 1.0f;
+                // Screen motion along the axis's projection moves the object along the axis.
+                const glm::vec2 screenAxis(glm::dot(unit, right), -glm::dot(unit, up));
+                const float along = glm::length(screenAxis) > 1e-3f
+                    ? glm::dot(glm::vec2(float(delta.x()), float(delta.y())), glm::normalize(screenAxis)) / glm::length(screenAxis)
+                    : 0.0f;
+                move = unit * along * metresPerPixel;
+            }
+        transform.translation += move;
         m_document->setNodeTransform(node, transform);
         startInteraction();
         return;
@@ -262,6 +275,12 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
     case Qt::Key_F:
         frameSelected();
         return;
+    case Qt::Key_X:
+    case Qt::Key_Y:
+    case Qt::Key_Z:
+        if (!event->isAutoRepeat())
+            m_flyKeys.insert(event->key()); // axis constraint for Ctrl+drag; no flying
+        return;
     case Qt::Key_W:
     case Qt::Key_A:
     case Qt::Key_S:
@@ -285,7 +304,8 @@ void ViewportWidget::keyReleaseEvent(QKeyEvent* event)
 {
     if (!event->isAutoRepeat())
         m_flyKeys.remove(event->key());
-    if (m_flyKeys.isEmpty())
+    if (!m_flyKeys.contains(Qt::Key_W) && !m_flyKeys.contains(Qt::Key_A) && !m_flyKeys.contains(Qt::Key_S)
+        && !m_flyKeys.contains(Qt::Key_D) && !m_flyKeys.contains(Qt::Key_Q) && !m_flyKeys.contains(Qt::Key_E))
         m_flyTimer.stop();
     QOpenGLWidget::keyReleaseEvent(event);
 }

@@ -28,7 +28,7 @@ namespace vct::ui {
 /**
  * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (orbit with the left button,
  * pan with the middle button or Shift, wheel zoom, WASD/QE fly, F frames the selection), picks nodes with a
- * click and moves the selected node with Ctrl+drag. While anything moves it renders at reduced resolution
+ * click and moves the selected node with Ctrl+drag (hold X, Y or Z to keep to that axis). While anything moves it renders at reduced resolution
  * and refines to full resolution once idle. With the inspector on, the right half shows the voxels of one
  * mip level as instanced cubes seen by the same camera.
  */

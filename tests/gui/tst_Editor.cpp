@@ -51,6 +51,7 @@ private slots:
     void emissiveFlagBrightensAndUndoRestores();
     void inspectorCountsMatchTheVoxels();
     void clickSelectsTheObjectUnderTheCursor();
+    void ctrlDragMovesTheSelectionInOneUndoStep();
     void exportWritesImages();
     void viewportSurvivesContextRecreation();
     void inspectorScreenshot();
@@ -193,6 +194,33 @@ void EditorTest::clickSelectsTheObjectUnderTheCursor()
     QCOMPARE(document->selectedNode(), shortBox);
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2)); // the black outside the box
     QVERIFY(document->selectedNode() != shortBox);
+}
+
+void EditorTest::ctrlDragMovesTheSelectionInOneUndoStep()
+{
+    doc::Document* document = m_window->document();
+    ui::ViewportWidget* viewport = m_window->viewport();
+    const int node = 0;
+    document->setSelectedNode(node);
+    const doc::NodeTransform before = document->state().nodes[node].transform;
+    const int steps = document->undoStack()->count();
+    const QPoint start(viewport->width() / 4, viewport->height() / 2);
+    QTest::keyPress(viewport, Qt::Key_Y);
+    QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, start);
+    for (int i = 1; i <= 5; ++i) {
+        QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(3 * i, -4 * i)), viewport->mapToGlobal(QPointF(start + QPoint(3 * i, -4 * i))),
+            Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+        QCoreApplication::sendEvent(viewport, &move);
+    }
+    QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, start + QPoint(15, -20));
+    QTest::keyRelease(viewport, Qt::Key_Y);
+    const doc::NodeTransform after = document->state().nodes[node].transform;
+    QVERIFY2(after.translation.y > before.translation.y, "dragging up with Y held moves the node up");
+    QCOMPARE(after.translation.x, before.translation.x); // kept on the Y axis
+    QCOMPARE(after.translation.z, before.translation.z);
+    QCOMPARE(document->undoStack()->count(), steps + 1); // five moves, one step
+    document->undoStack()->undo();
+    QVERIFY(document->state().nodes[node].transform == before);
 }
 
 void EditorTest::exportWritesImages()
