@@ -20,7 +20,8 @@ namespace vct::render {
 struct ChangeVersions {
     std::uint64_t staticGeometry = 1; ///< Static meshes, their materials, or the grid.
     std::uint64_t dynamicGeometry = 1;
-    std::uint64_t lights = 1;
+    std::uint64_t lightPlacement = 1; ///< Light count, positions, directions, shadow flags: shadow maps.
+    std::uint64_t lightValues = 1;    ///< Anything about lights, intensities included: injection.
     std::uint64_t shading = 1; ///< Settings that change injection (emission toggle).
 };
 

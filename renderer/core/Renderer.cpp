@@ -144,7 +144,8 @@ void Renderer::setScene(const Scene& scene)
     m_state->scene = std::make_unique<GpuScene>(scene);
     ++m_state->versions.staticGeometry;
     ++m_state->versions.dynamicGeometry;
-    ++m_state->versions.lights;
+    ++m_state->versions.lightPlacement;
+    ++m_state->versions.lightValues;
 }
 
 void Renderer::setGridBounds(const Aabb& bounds)
@@ -163,7 +164,7 @@ void Renderer::setSettings(const RenderSettings& settings)
     if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
         ++m_state->versions.shading;
     if (settings.shadowMapSize != m_settings.shadowMapSize)
-        ++m_state->versions.lights;
+        ++m_state->versions.lightPlacement;
     if (settings.diffuseConeCount != m_state->cones.size())
         m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
     m_settings = settings;
@@ -176,20 +177,38 @@ void Renderer::setMeshTransform(std::size_t mesh, const glm::mat4& transform)
     const bool dynamic = m_state->scene->scene().meshes[mesh].dynamic;
     m_state->scene->setTransform(mesh, transform);
     ++(dynamic ? m_state->versions.dynamicGeometry : m_state->versions.staticGeometry);
-    ++m_state->versions.lights; // shadows move with the geometry
+    ++m_state->versions.lightPlacement; // shadows move with the geometry
 }
 
 void Renderer::setMaterial(std::size_t index, const Material& material)
 {
     m_state->scene->setMaterial(index, material);
-    ++m_state->versions.staticGeometry;
-    ++m_state->versions.dynamicGeometry;
+    // Only the voxel layers holding a mesh of this material are redone.
+    bool usedStatic = false, usedDynamic = false;
+    for (const Mesh& mesh : m_state->scene->scene().meshes)
+        if (mesh.material == int(index))
+            (mesh.dynamic ? usedDynamic : usedStatic) = true;
+    if (usedStatic)
+        ++m_state->versions.staticGeometry;
+    if (usedDynamic)
+        ++m_state->versions.dynamicGeometry;
 }
 
 void Renderer::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
 {
+    const Scene& old = m_state->scene->scene();
+    // A change of colour or intensity alone keeps the shadow maps.
+    bool placementChanged = points.size() != old.pointLights.size() || directionals.size() != old.directionalLights.size();
+    for (std::size_t i = 0; !placementChanged && i < points.size(); ++i)
+        placementChanged = points[i].position != old.pointLights[i].position
+            || points[i].castsShadows != old.pointLights[i].castsShadows;
+    for (std::size_t i = 0; !placementChanged && i < directionals.size(); ++i)
+        placementChanged = directionals[i].direction != old.directionalLights[i].direction
+            || directionals[i].castsShadows != old.directionalLights[i].castsShadows;
     m_state->scene->setLights(points, directionals);
-    ++m_state->versions.lights;
+    if (placementChanged)
+        ++m_state->versions.lightPlacement;
+    ++m_state->versions.lightValues;
 }
 
 void Renderer::invalidate()

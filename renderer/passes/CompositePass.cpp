@@ -1,6 +1,7 @@
 #include "passes/CompositePass.h"
 
 #include "core/FrameContext.h"
+#include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
 namespace vct::render {
@@ -17,8 +18,10 @@ void CompositePass::execute(FrameContext& frame)
     applyLightUniforms(m_program, frame.scene.scene(), frame.shadows);
     m_program.set("uCameraPosition", frame.camera.position);
     m_program.set("uDirectEnabled", settings.direct ? 1 : 0);
-    m_program.set("uIndirectDiffuseEnabled", settings.indirectDiffuse ? 1 : 0);
-    m_program.set("uIndirectSpecularEnabled", settings.indirectSpecular ? 1 : 0);
+    // The indirect targets hold this frame's light only when the cone pass ran for them.
+    m_program.set("uIndirectDiffuseEnabled", settings.indirectDiffuse && FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
+    m_program.set("uIndirectSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
+    m_program.set("uAoAvailable", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
     m_program.set("uEmissionEnabled", settings.emission ? 1 : 0);
     m_program.set("uView", int(settings.view));
     // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.

@@ -1,6 +1,7 @@
 #include "passes/ConeTracePass.h"
 
 #include "core/FrameContext.h"
+#include "core/FrameRules.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -10,10 +11,20 @@ namespace vct::render {
 
 PassDecision ConeTracePass::plan(const FrameContext& frame)
 {
-    const bool specular = frame.settings.indirectSpecular && frame.scene.scene().hasGlossyMaterial();
-    if (!frame.settings.indirectDiffuse && !specular && !frame.settings.ambientOcclusion)
-        return {PassDecision::Action::Skip, "indirect light and AO are off"};
-    return {PassDecision::Action::Run, specular ? "per-frame: diffuse and specular cones" : "per-frame: diffuse cones"};
+    const bool diffuse = FrameRules::diffuseConesNeeded(frame);
+    const bool specular = FrameRules::specularConesNeeded(frame);
+    if (!diffuse && !specular) {
+        if (!FrameRules::hasLightSources(frame))
+            return {PassDecision::Action::Skip, "no lights and no emission: no indirect light at all"};
+        return {PassDecision::Action::Skip, "indirect diffuse off, no glossy material, AO not shown"};
+    }
+    std::string reason = "per-frame: ";
+    reason += diffuse ? (specular ? "diffuse and specular cones" : "diffuse cones") : "specular cones";
+    if (!specular)
+        reason += frame.settings.indirectSpecular ? " (no glossy material: no specular cones)" : " (specular off)";
+    if (diffuse && !FrameRules::ambientOcclusionNeeded(frame))
+        reason += ", no AO";
+    return {PassDecision::Action::Run, reason};
 }
 
 void ConeTracePass::execute(FrameContext& frame)
@@ -42,8 +53,9 @@ void ConeTracePass::execute(FrameContext& frame)
     m_program.set("uCones", cones);
     m_program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
     m_program.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
-    m_program.set("uDiffuseEnabled", settings.indirectDiffuse || settings.ambientOcclusion ? 1 : 0);
-    m_program.set("uSpecularEnabled", settings.indirectSpecular ? 1 : 0);
+    m_program.set("uDiffuseEnabled", FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
+    m_program.set("uSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
+    m_program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
     m_program.set("uAoDistance", 0.1f * v.frame.extent);
     m_program.set("uCameraPosition", frame.camera.position);
 

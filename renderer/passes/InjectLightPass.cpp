@@ -1,20 +1,26 @@
 #include "passes/InjectLightPass.h"
 
 #include "core/FrameContext.h"
+#include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
 namespace vct::render {
 
 std::array<std::uint64_t, 4> InjectLightPass::keyOf(const FrameContext& frame) const
 {
-    return {frame.voxels.materialsVersion, frame.versions.lights, frame.versions.shading, frame.shadows.version};
+    return {frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading, frame.shadows.version};
 }
 
 PassDecision InjectLightPass::plan(const FrameContext& frame)
 {
     if (keyOf(frame) == m_key)
         return {PassDecision::Action::Reuse, "voxels, lights and shadows unchanged"};
-    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "no valid output yet" : "voxels or lights changed"};
+    std::string reason = m_key == decltype(m_key){} ? "no valid output yet" : "voxels or lights changed";
+    if (!FrameRules::emissionNeeded(frame))
+        reason += "; no emission to inject";
+    if (!FrameRules::hasLightSources(frame))
+        reason += "; no light sources: opacity only";
+    return {PassDecision::Action::Run, reason};
 }
 
 void InjectLightPass::execute(FrameContext& frame)
@@ -28,7 +34,7 @@ void InjectLightPass::execute(FrameContext& frame)
     m_program.set("uResolution", v.frame.resolution);
     m_program.set("uGridOrigin", v.frame.origin);
     m_program.set("uVoxelSize", v.frame.voxelSize());
-    m_program.set("uEmissionEnabled", frame.settings.emission ? 1 : 0);
+    m_program.set("uEmissionEnabled", FrameRules::emissionNeeded(frame) ? 1 : 0);
     m_program.set("uDirectEnabled", frame.settings.direct ? 1 : 0);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);

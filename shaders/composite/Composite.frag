@@ -15,6 +15,7 @@ uniform bool uDirectEnabled;
 uniform bool uIndirectDiffuseEnabled;
 uniform bool uIndirectSpecularEnabled;
 uniform bool uEmissionEnabled;
+uniform bool uAoAvailable; // the cone pass computed ambient occlusion this frame
 uniform int uView; // RenderSettings::view
 uniform float uShadowOffset; // metres along the normal for shadow lookups
 
@@ -65,7 +66,7 @@ void main()
     if (uView == 1) result = direct;
     else if (uView == 2) result = diffuseIndirect;
     else if (uView == 3) result = specularIndirect;
-    else if (uView == 4) result = vec3(indirectDiffuse.a);
+    else if (uView == 4) result = vec3(uAoAvailable ? indirectDiffuse.a : 1.0);
     else if (uView == 5) result = albedo;
     else if (uView == 6) result = n * 0.5 + 0.5;
     else if (uView == 7) result = emitted;

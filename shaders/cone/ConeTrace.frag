@@ -30,6 +30,7 @@ uniform float uDiffuseTanHalf;
 uniform float uSpecularMinTanHalf;
 uniform bool uDiffuseEnabled;
 uniform bool uSpecularEnabled;
+uniform bool uAoEnabled;          // accumulate occlusion only when the AO view shows it
 uniform float uAoDistance;        // occluders beyond this count half
 uniform vec3 uCameraPosition;
 
@@ -69,7 +70,8 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, out float occlusion)
         if (s.a > 1e-4) {
             float a = correctOpacity(s.a, stepLength, uVoxelSize * exp2(level));
             color += (1.0 - alpha) * s.rgb * (a / s.a);
-            occlusion += (1.0 - alpha) * a / (1.0 + t / uAoDistance);
+            if (uAoEnabled)
+                occlusion += (1.0 - alpha) * a / (1.0 + t / uAoDistance);
             alpha += (1.0 - alpha) * a;
         }
         t += stepLength;

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "core/FrameContext.h"
+
+namespace vct::render {
+
+/**
+ * What the scene and settings call for this frame. The plan skips a pass whose effect nobody needs, and the
+ * shaders skip the work inside a pass the same way, so both agree by construction.
+ */
+struct FrameRules {
+    /** Something emits light: an enabled light, or an emissive material with emission on. */
+    static bool hasLightSources(const FrameContext& frame)
+    {
+        const Scene& scene = frame.scene.scene();
+        const bool lights = frame.settings.direct && (!scene.pointLights.empty() || !scene.directionalLights.empty());
+        return lights || emissionNeeded(frame);
+    }
+    static bool emissionNeeded(const FrameContext& frame)
+    {
+        return frame.settings.emission && frame.scene.scene().hasEmissiveMaterial();
+    }
+    /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
+    static bool ambientOcclusionNeeded(const FrameContext& frame)
+    {
+        return frame.settings.ambientOcclusion && frame.settings.view == DebugView::AmbientOcclusion;
+    }
+    static bool diffuseConesNeeded(const FrameContext& frame)
+    {
+        return (frame.settings.indirectDiffuse && hasLightSources(frame)) || ambientOcclusionNeeded(frame);
+    }
+    static bool specularConesNeeded(const FrameContext& frame)
+    {
+        return frame.settings.indirectSpecular && frame.scene.scene().hasGlossyMaterial() && hasLightSources(frame);
+    }
+};
+
+} // namespace vct::render

@@ -1,0 +1,234 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include "document/SceneLoader.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QtTest>
+
+using namespace vct;
+
+/**
+ * Invalidation is exact: after every kind of edit, the frame rendered with the plan (reusing and skipping
+ * passes) equals the frame rendered with every pass forced to run. Float atomics add voxel fragments in a
+ * varying order, so images may differ in the last bits: the bound is 1e-4 relative.
+ */
+class RenderPlanTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cameraOnlyReusesEverythingButPerPixelWork();
+    void movedLightKeepsVoxels();
+    void brighterLightKeepsShadowMaps();
+    void movedDynamicObjectRedoesOnlyItsLayer();
+    void editedMaterialRedoesOnlyLayersUsingIt();
+    void glossyMaterialAddsSpecularCones();
+    void voxelSettingsRebuildEverything();
+    void ambientOcclusionOnlyWhenShown();
+    void noLightSourcesMeansNoIndirectLight();
+
+private:
+    render::FrameStats planned();
+    void expectSameAsForced(const char* what);
+    const render::PassStats& pass(const std::string& name) const;
+    void expectAction(const std::string& pass, const std::string& action);
+
+    test::GlTestContext m_gl;
+    render::Scene m_scene;
+    render::Camera m_camera;
+    render::FrameStats m_last;
+    render::RadianceImage m_plannedImage;
+    int m_dynamicMesh = -1;
+    int m_staticOnlyMaterial = -1;
+};
+
+void RenderPlanTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+    QString error;
+    QVERIFY2(doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error), qPrintable(error));
+    // The short box moves (dynamic) and gets its own material so material edits can target one layer.
+    for (std::size_t i = 0; i < m_scene.meshes.size(); ++i)
+        if (m_scene.meshes[i].name.rfind("shortbox", 0) == 0) {
+            m_dynamicMesh = int(i);
+            m_scene.meshes[i].dynamic = true;
+            render::Material own = m_scene.materials[std::size_t(m_scene.meshes[i].material)];
+            own.name = "shortbox";
+            m_scene.materials.push_back(own);
+            m_scene.meshes[i].material = int(m_scene.materials.size()) - 1;
+        }
+    QVERIFY(m_dynamicMesh >= 0);
+    for (std::size_t m = 0; m < m_scene.materials.size(); ++m)
+        if (m_scene.materials[m].name == "red")
+            m_staticOnlyMaterial = int(m);
+    QVERIFY(m_staticOnlyMaterial >= 0);
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    settings.shadowMapSize = 256;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(m_scene);
+    m_camera = m_scene.camera;
+    planned();
+    expectSameAsForced("first frame");
+}
+
+render::FrameStats RenderPlanTest::planned()
+{
+    m_last = m_gl.renderer->renderFrame(m_camera, 40, 40);
+    m_plannedImage = m_gl.renderer->readFrame();
+    return m_last;
+}
+
+void RenderPlanTest::expectSameAsForced(const char* what)
+{
+    m_gl.renderer->invalidate();
+    const render::FrameStats forced = m_gl.renderer->renderFrame(m_camera, 40, 40);
+    for (const render::PassStats& p : forced.passes)
+        QVERIFY2(p.action != "reused", qPrintable(QString("%1: forced frame reused %2").arg(what, p.name.c_str())));
+    const render::RadianceImage reference = m_gl.renderer->readFrame();
+    double worst = 0.0;
+    for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double a = m_plannedImage.pixels[i][c], b = reference.pixels[i][c];
+            worst = std::max(worst, std::abs(a - b) / (1.0 + std::abs(b)));
+        }
+    QVERIFY2(worst <= 1e-4, qPrintable(QString("%1: planned frame differs from forced by %2").arg(what).arg(worst)));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+const render::PassStats& RenderPlanTest::pass(const std::string& name) const
+{
+    for (const render::PassStats& p : m_last.passes)
+        if (p.name == name)
+            return p;
+    qFatal("no pass %s", name.c_str());
+}
+
+void RenderPlanTest::expectAction(const std::string& name, const std::string& action)
+{
+    const render::PassStats& p = pass(name);
+    QVERIFY2(p.action == action, qPrintable(QString("%1: %2 (%3), expected %4").arg(name.c_str(), p.action.c_str(),
+                                                p.reason.c_str(), action.c_str())));
+}
+
+void RenderPlanTest::cameraOnlyReusesEverythingButPerPixelWork()
+{
+    m_camera.position = glm::vec3(glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
+    planned();
+    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+        expectAction(name, "reused");
+    for (const char* name : {"g-buffer", "cone trace", "composite"})
+        expectAction(name, "run");
+    expectSameAsForced("camera orbit");
+}
+
+void RenderPlanTest::movedLightKeepsVoxels()
+{
+    m_scene.pointLights[0].position += glm::vec3(0.1f, -0.05f, 0.0f);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    planned();
+    expectAction("shadow maps", "run");
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "run");
+    expectAction("mipmaps", "run");
+    expectSameAsForced("moved light");
+}
+
+void RenderPlanTest::brighterLightKeepsShadowMaps()
+{
+    m_scene.pointLights[0].intensity *= 1.5f;
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    planned();
+    expectAction("shadow maps", "reused");
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "run");
+    expectSameAsForced("brighter light");
+}
+
+void RenderPlanTest::movedDynamicObjectRedoesOnlyItsLayer()
+{
+    m_gl.renderer->setMeshTransform(std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), glm::vec3(-0.2f, 0.0f, 0.1f)));
+    planned();
+    expectAction("voxelize", "run");
+    QVERIFY(pass("voxelize").reason.find("dynamic") != std::string::npos);
+    expectAction("shadow maps", "run"); // its shadow moved too
+    expectSameAsForced("moved dynamic object");
+}
+
+void RenderPlanTest::editedMaterialRedoesOnlyLayersUsingIt()
+{
+    render::Material red = m_scene.materials[std::size_t(m_staticOnlyMaterial)];
+    red.albedo *= 0.5f;
+    m_gl.renderer->setMaterial(std::size_t(m_staticOnlyMaterial), red);
+    planned();
+    expectAction("voxelize", "run");
+    QVERIFY(pass("voxelize").reason.find("static") != std::string::npos);
+    expectSameAsForced("static material edit");
+
+    render::Material box = m_scene.materials[std::size_t(m_scene.meshes[std::size_t(m_dynamicMesh)].material)];
+    box.albedo = glm::vec3(0.2f, 0.6f, 0.2f);
+    m_gl.renderer->setMaterial(std::size_t(m_scene.meshes[std::size_t(m_dynamicMesh)].material), box);
+    planned();
+    expectAction("voxelize", "run");
+    QVERIFY(pass("voxelize").reason.find("dynamic") != std::string::npos);
+    expectSameAsForced("dynamic-only material edit");
+}
+
+void RenderPlanTest::glossyMaterialAddsSpecularCones()
+{
+    QVERIFY(pass("cone trace").reason.find("no specular cones") != std::string::npos);
+    render::Material white;
+    for (std::size_t m = 0; m < m_scene.materials.size(); ++m)
+        if (m_scene.materials[m].name == "white") {
+            white = m_scene.materials[m];
+            white.specular = glm::vec3(0.2f);
+            white.albedo *= 0.75f;
+            white.shininess = 60.0f;
+            m_gl.renderer->setMaterial(m, white);
+        }
+    planned();
+    QVERIFY(pass("cone trace").reason.find("specular cones") != std::string::npos);
+    QVERIFY(pass("cone trace").reason.find("no specular") == std::string::npos);
+    expectSameAsForced("glossy material");
+}
+
+void RenderPlanTest::voxelSettingsRebuildEverything()
+{
+    render::RenderSettings settings = m_gl.renderer->settings();
+    settings.voxelResolution = 16;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+        expectAction(name, "run");
+    expectSameAsForced("grid resolution");
+}
+
+void RenderPlanTest::ambientOcclusionOnlyWhenShown()
+{
+    QVERIFY(pass("cone trace").reason.find("no AO") != std::string::npos);
+    render::RenderSettings settings = m_gl.renderer->settings();
+    settings.view = render::DebugView::AmbientOcclusion;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    QVERIFY(pass("cone trace").reason.find("no AO") == std::string::npos);
+    expectSameAsForced("AO view");
+    settings.view = render::DebugView::Final;
+    m_gl.renderer->setSettings(settings);
+}
+
+void RenderPlanTest::noLightSourcesMeansNoIndirectLight()
+{
+    m_gl.renderer->setLights({}, {});
+    planned();
+    expectAction("cone trace", "skipped");
+    QVERIFY(pass("cone trace").reason.find("no lights and no emission") != std::string::npos);
+    for (const glm::vec3& p : m_plannedImage.pixels)
+        QCOMPARE(p, glm::vec3(0.0f)); // nothing emits, nothing can be seen
+    expectSameAsForced("no light sources");
+}
+
+QTEST_GUILESS_MAIN(RenderPlanTest)
+#include "tst_RenderPlan.moc"
