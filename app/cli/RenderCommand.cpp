@@ -1,10 +1,10 @@
 #include "cli/RenderCommand.h"
 
 #include "document/CameraFile.h"
-#include "document/Document.h"
 #include "imageio/ImageFile.h"
 #include "document/LightsFile.h"
 #include "document/SceneLoader.h"
+#include "cli/SceneInput.h"
 #include "cli/StatsJson.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
@@ -75,16 +75,9 @@ int RenderCommand::run(int argc, char** argv)
     QString error;
     doc::SceneLoadInfo info;
     render::RenderSettings settings;
-    if (sceneSpec.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)) {
-        // A project brings its own settings and camera; --set and --camera still override them.
-        doc::Document project;
-        if (!project.openProject(sceneSpec, &error))
-            return fail(1, error);
-        scene = project.buildRenderScene();
-        settings = project.state().settings;
-    } else if (!doc::SceneLoader::load(sceneSpec, scene, &error, &info)) {
+    // A project brings its own settings and camera; --set and --camera still override them.
+    if (!loadSceneInput(sceneSpec, scene, settings, info, &error))
         return fail(1, error);
-    }
     QStringList assignments = parser.values(setOption);
     if (parser.isSet(voxelOption))
         assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));

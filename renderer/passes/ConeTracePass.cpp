@@ -29,12 +29,15 @@ PassDecision ConeTracePass::plan(const FrameContext& frame)
 
 void ConeTracePass::execute(FrameContext& frame)
 {
-    if (!m_program) {
-        m_program = frame.shaders.build({"cone trace", {"common/FullScreen.vert", "cone/ConeTrace.frag"}, {}});
-        m_emptyVao = gl::VertexArray::create();
-    }
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
+    const bool anisotropic = settings.anisotropicMips && v.directional[0];
+    gl::Program& program = anisotropic ? m_anisotropicProgram : m_program;
+    if (!program)
+        program = frame.shaders.build({anisotropic ? "cone trace (anisotropic)" : "cone trace",
+            {"common/FullScreen.vert", "cone/ConeTrace.frag"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
+    if (!m_emptyVao)
+        m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
     const float voxel = v.frame.voxelSize();
     const float maxDistance = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
@@ -42,35 +45,34 @@ void ConeTracePass::execute(FrameContext& frame)
     for (int i = 0; i < frame.diffuseCones.size(); ++i)
         cones.emplace_back(frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
 
-    m_program.set("uGridOrigin", v.frame.origin);
-    m_program.set("uGridExtent", v.frame.extent);
-    m_program.set("uVoxelSize", voxel);
-    m_program.set("uMaxLevel", float(v.radiance.levels() - 1));
-    m_program.set("uStepFactor", settings.stepFactor);
-    m_program.set("uMaxDistance", maxDistance);
-    m_program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
-    m_program.set("uConeCount", frame.diffuseCones.size());
-    m_program.set("uCones", cones);
-    m_program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
-    m_program.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
-    m_program.set("uDiffuseEnabled", FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
-    m_program.set("uSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
-    m_program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
-    m_program.set("uAoDistance", 0.1f * v.frame.extent);
-    m_program.set("uCameraPosition", frame.camera.position);
+    program.set("uGridOrigin", v.frame.origin);
+    program.set("uGridExtent", v.frame.extent);
+    program.set("uVoxelSize", voxel);
+    program.set("uMaxLevel", float(v.radiance.levels() - 1));
+    program.set("uStepFactor", settings.stepFactor);
+    program.set("uMaxDistance", maxDistance);
+    program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
+    program.set("uConeCount", frame.diffuseCones.size());
+    program.set("uCones", cones);
+    program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
+    program.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
+    program.set("uDiffuseEnabled", FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
+    program.set("uSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
+    program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
+    program.set("uAoDistance", 0.1f * v.frame.extent);
+    program.set("uCameraPosition", frame.camera.position);
 
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
     s.specular.bindUnit(3);
     v.radiance.bindUnit(5);
-    const bool anisotropic = settings.anisotropicMips && v.directional[0];
-    m_program.set("uAnisotropic", anisotropic ? 1 : 0);
-    for (std::size_t d = 0; d < 6; ++d)
-        (anisotropic ? v.directional[d] : v.radiance).bindUnit(GLuint(6 + d));
+    if (anisotropic)
+        for (std::size_t d = 0; d < 6; ++d)
+            v.directional[d].bindUnit(GLuint(6 + d));
     s.indirectTarget.bind();
     glViewport(0, 0, s.width, s.height);
     glDisable(GL_DEPTH_TEST);
-    m_program.use();
+    program.use();
     m_emptyVao.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -19,7 +19,8 @@ public:
     void invalidate() override {}
 
 private:
-    gl::Program m_program;
+    gl::Program m_program;            ///< box-filtered mips
+    gl::Program m_anisotropicProgram; ///< direction-dependent mips
     gl::VertexArray m_emptyVao;
 };
 

@@ -8,14 +8,17 @@ layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
 layout(binding = 3) uniform sampler2D gSpecular;
 layout(binding = 5) uniform sampler3D uRadiance;
+#ifdef ANISOTROPIC
 // Direction-dependent mips (RenderSettings::anisotropicMips): level k here is grid level k + 1.
+// A compile-time variant, not a uniform branch: llvmpipe ran both sides of the branch and the plain
+// path cost six times as much.
 layout(binding = 6) uniform sampler3D uTowardsPosX;
 layout(binding = 7) uniform sampler3D uTowardsNegX;
 layout(binding = 8) uniform sampler3D uTowardsPosY;
 layout(binding = 9) uniform sampler3D uTowardsNegY;
 layout(binding = 10) uniform sampler3D uTowardsPosZ;
 layout(binding = 11) uniform sampler3D uTowardsNegZ;
-uniform bool uAnisotropic;
+#endif
 
 uniform vec3 uGridOrigin;
 uniform float uGridExtent;
@@ -42,7 +45,10 @@ const int kMaxSteps = 256;
 // The volume as a cone travelling along dir sees it at a (fractional) mip level.
 vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
 {
-    if (!uAnisotropic || level <= 0.0)
+#ifndef ANISOTROPIC
+    return textureLod(uRadiance, uvw, level);
+#else
+    if (level <= 0.0)
         return textureLod(uRadiance, uvw, level);
     vec3 w = dir * dir; // sums to one for a unit direction
     float l = max(level - 1.0, 0.0);
@@ -50,6 +56,7 @@ vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
         + w.y * (dir.y > 0.0 ? textureLod(uTowardsPosY, uvw, l) : textureLod(uTowardsNegY, uvw, l))
         + w.z * (dir.z > 0.0 ? textureLod(uTowardsPosZ, uvw, l) : textureLod(uTowardsNegZ, uvw, l));
     return level < 1.0 ? mix(textureLod(uRadiance, uvw, 0.0), directional, level) : directional;
+#endif
 }
 
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity.
