@@ -1,6 +1,8 @@
 #pragma once
 
 #include "core/VoxelGridFrame.h"
+#include "core/VoxelRegion.h"
+#include "scene/Aabb.h"
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
 
@@ -25,6 +27,11 @@ struct VoxelVolume {
     /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid level k+1).
     std::array<gl::Texture, 6> directional;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
+    /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
+    VoxelRegion changedRegion;
+    bool onlyDynamicChanged = false;
+    Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
+    Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
 
     std::size_t byteSize() const;

@@ -163,8 +163,10 @@ void Renderer::setSettings(const RenderSettings& settings)
     }
     if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
         ++m_state->versions.shading;
-    if (settings.shadowMapSize != m_settings.shadowMapSize)
+    if (settings.shadowMapSize != m_settings.shadowMapSize) {
         ++m_state->versions.lightPlacement;
+        ++m_state->versions.lightValues; // every shadow lookup changes: re-inject everything
+    }
     if (settings.diffuseConeCount != m_state->cones.size())
         m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
     m_settings = settings;
@@ -182,7 +184,13 @@ void Renderer::setMeshTransform(std::size_t mesh, const glm::mat4& transform)
 
 void Renderer::setMaterial(std::size_t index, const Material& material)
 {
+    const std::vector<Material>& materials = m_state->scene->scene().materials;
+    // Voxels hold albedo and emission only: a specular or gloss edit changes per-pixel shading alone.
+    const bool voxelsAffected = index >= materials.size() || materials[index].albedo != material.albedo
+        || materials[index].emission != material.emission || materials[index].albedoTexture != material.albedoTexture;
     m_state->scene->setMaterial(index, material);
+    if (!voxelsAffected)
+        return;
     // Only the voxel layers holding a mesh of this material are redone.
     bool usedStatic = false, usedDynamic = false;
     for (const Mesh& mesh : m_state->scene->scene().meshes)

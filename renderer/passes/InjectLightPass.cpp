@@ -11,11 +11,65 @@ std::array<std::uint64_t, 4> InjectLightPass::keyOf(const FrameContext& frame) c
     return {frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading, frame.shadows.version};
 }
 
+namespace {
+
+/**
+ * The grid box that can fall into the shadow of `box`: the box plus everything behind it as seen from each
+ * light, i.e. its corners pushed away from the light by a grid diagonal. Conservative (a box around the
+ * shadow frustum), and the whole grid when a point light sits inside the box.
+ */
+VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const VoxelGridFrame& grid, int margin)
+{
+    if (box.isEmpty())
+        return {};
+    const float reach = grid.extent * 1.75f;
+    Aabb covered = box;
+    const glm::vec3 corners[8] = {box.min, {box.max.x, box.min.y, box.min.z}, {box.min.x, box.max.y, box.min.z},
+        {box.min.x, box.min.y, box.max.z}, {box.max.x, box.max.y, box.min.z}, {box.max.x, box.min.y, box.max.z},
+        {box.min.x, box.max.y, box.max.z}, box.max};
+    for (const PointLight& light : scene.pointLights) {
+        if (!light.castsShadows)
+            continue;
+        if (glm::all(glm::greaterThanEqual(light.position, box.min - grid.voxelSize()))
+            && glm::all(glm::lessThanEqual(light.position, box.max + grid.voxelSize())))
+            return VoxelRegion::whole(grid.resolution);
+        for (const glm::vec3& c : corners)
+            covered.extend(c + glm::normalize(c - light.position) * reach);
+    }
+    for (const DirectionalLight& light : scene.directionalLights)
+        if (light.castsShadows)
+            for (const glm::vec3& c : corners)
+                covered.extend(c + glm::normalize(light.direction) * reach);
+    return VoxelRegion::around(covered, grid, margin);
+}
+
+} // namespace
+
+VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
+{
+    const VoxelVolume& v = frame.voxels;
+    const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
+    const auto key = keyOf(frame);
+    // Lights, shading settings and shadow-map size all bump lightValues or shading: those need everything.
+    const bool sameLights = m_key != decltype(m_key){} && key[1] == m_key[1] && key[2] == m_key[2];
+    if (!sameLights || !v.onlyDynamicChanged)
+        return whole;
+    const Scene& scene = frame.scene.scene();
+    return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, v.frame, 2))
+        .united(shadowReach(v.previousDynamicBounds, scene, v.frame, 2));
+}
+
 PassDecision InjectLightPass::plan(const FrameContext& frame)
 {
     if (keyOf(frame) == m_key)
         return {PassDecision::Action::Reuse, "voxels, lights and shadows unchanged"};
     std::string reason = m_key == decltype(m_key){} ? "no valid output yet" : "voxels or lights changed";
+    const VoxelRegion region = regionToInject(frame);
+    if (region.size() != VoxelRegion::whole(frame.voxels.frame.resolution).size()) {
+        const glm::ivec3 s = region.size();
+        reason = "a dynamic object moved: re-injecting " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
+            + std::to_string(s.z) + " voxels around it and its shadow";
+    }
     if (!FrameRules::emissionNeeded(frame))
         reason += "; no emission to inject";
     if (!FrameRules::hasLightSources(frame))
@@ -27,6 +81,7 @@ void InjectLightPass::execute(FrameContext& frame)
 {
     if (!m_program)
         m_program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"}, {}});
+    const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;
     m_program.use();
@@ -40,8 +95,11 @@ void InjectLightPass::execute(FrameContext& frame)
     v.normal.bindUnit(1);
     v.emission.bindUnit(2);
     v.radiance.bindImage(0, 0, GL_WRITE_ONLY);
-    const GLuint groups = GLuint((v.frame.resolution + 3) / 4);
-    glDispatchCompute(groups, groups, groups);
+    m_program.set("uRegionOrigin", region.lo);
+    m_program.set("uRegionSize", region.size());
+    const glm::ivec3 groups = (region.size() + 3) / 4;
+    if (!region.isEmpty())
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++v.radianceVersion;
 }

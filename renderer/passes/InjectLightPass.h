@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/RenderPass.h"
+#include "core/VoxelRegion.h"
 #include "gl/Program.h"
 
 #include <array>
@@ -22,6 +23,8 @@ public:
 
 private:
     std::array<std::uint64_t, 4> keyOf(const FrameContext& frame) const;
+    /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
+    VoxelRegion regionToInject(const FrameContext& frame) const;
     gl::Program m_program;
     std::array<std::uint64_t, 4> m_key{};
 };

@@ -111,9 +111,10 @@ void ShadowMapPass::execute(FrameContext& frame)
         frame.scene.draw(m_program, MeshFilter::All, 0);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    // llvmpipe (Mesa 22.3) lets a compute dispatch sample these maps before the queued depth rendering into
-    // them has run; submitting it here orders the two (tests/gl/tst_RenderPlan caught the stale shadows).
-    glFlush();
+    // llvmpipe (Mesa 22.3) lets later passes sample these maps before the queued depth rendering into them
+    // has finished (tests/gl/tst_RenderPlan caught stale shadows after a light moved; glFlush was not
+    // enough). Waiting here costs little: it happens only in frames that redraw the shadow maps.
+    glFinish();
     ++shadows.version;
 }
 

@@ -6,11 +6,14 @@ namespace vct::render {
 
 namespace {
 
-void dispatchOverGrid(int resolution)
+void dispatchOver(const VoxelRegion& region)
 {
-    const GLuint groups = GLuint((resolution + 3) / 4);
-    glDispatchCompute(groups, groups, groups);
+    const glm::ivec3 groups = (region.size() + 3) / 4;
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
 }
+
+// Margin around a moving object's bounds: conservative enlargement and depth spread reach one voxel out.
+constexpr int kDynamicMargin = 2;
 
 } // namespace
 
@@ -39,6 +42,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     const int levels = v.frame.levelCount();
     // One r32f atlas of 2 x 2 x 3 slots holds the ten running sums (see common/VoxelAccumulators.glsl).
     v.accumulators = gl::Texture::create3D(GL_R32F, 2 * res, 2 * res, 3 * res);
+    v.dynamicBounds = Aabb{};
     v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
     v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
     v.staticEmission = gl::Texture::create3D(GL_RGBA16F, res);
@@ -51,11 +55,17 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
-void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes)
+void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
-    v.accumulators.clear();
+    // Only the region the meshes can touch needs zero sums: clearing the whole atlas costs more than drawing.
+    const float zero = 0.0f;
+    for (int slot = 0; slot < 10; ++slot) {
+        const glm::ivec3 origin = region.lo + res * glm::ivec3(slot % 2, (slot / 2) % 2, slot / 4);
+        const glm::ivec3 size = region.size();
+        glClearTexSubImage(v.accumulators.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED, GL_FLOAT, &zero);
+    }
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
     glDisable(GL_DEPTH_TEST);
@@ -78,12 +88,14 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes)
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer)
+void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
 {
     VoxelVolume& v = frame.voxels;
     m_resolve.use();
     m_resolve.set("uResolution", v.frame.resolution);
     m_resolve.set("uMergeStatic", mergeStatic ? 1 : 0);
+    m_resolve.set("uRegionOrigin", region.lo);
+    m_resolve.set("uRegionSize", region.size());
     v.accumulators.bindImage(0, 0, GL_READ_ONLY);
     (intoStaticLayer ? v.staticAlbedo : v.albedo).bindImage(1, 0, GL_WRITE_ONLY);
     (intoStaticLayer ? v.staticNormal : v.normal).bindImage(2, 0, GL_WRITE_ONLY);
@@ -91,26 +103,42 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
     v.staticAlbedo.bindUnit(0);
     v.staticNormal.bindUnit(1);
     v.staticEmission.bindUnit(2);
-    dispatchOverGrid(v.frame.resolution);
+    dispatchOver(region);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void VoxelizePass::execute(FrameContext& frame)
 {
     ensureResources(frame);
+    VoxelVolume& v = frame.voxels;
+    const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
-    if (m_staticVersion != frame.versions.staticGeometry) {
-        accumulate(frame, false);
+    const Aabb dynamicBounds = frame.scene.scene().bounds(true);
+    const bool staticChanged = m_staticVersion != frame.versions.staticGeometry;
+    if (staticChanged) {
+        accumulate(frame, false, whole);
         // Without dynamic meshes the static layer is the final one: resolve straight into it.
-        resolve(frame, false, hasDynamic);
+        resolve(frame, false, hasDynamic, whole);
         m_staticVersion = frame.versions.staticGeometry;
     }
+    VoxelRegion changed = whole;
     if (hasDynamic) {
-        accumulate(frame, true);
-        resolve(frame, true, false);
+        // After a static rebuild every voxel is new; otherwise only where the objects were and are now.
+        const VoxelRegion region = staticChanged
+            ? whole
+            : VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin)
+                  .united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+        if (!region.isEmpty()) {
+            accumulate(frame, true, region);
+            resolve(frame, true, false, region);
+        }
+        changed = region;
     }
+    v.changedRegion = changed;
+    v.onlyDynamicChanged = !staticChanged;
+    v.previousDynamicBounds = v.dynamicBounds;
+    v.dynamicBounds = dynamicBounds;
     m_dynamicVersion = frame.versions.dynamicGeometry;
-    ++frame.voxels.materialsVersion;
+    ++v.materialsVersion;
 }
-
 } // namespace vct::render

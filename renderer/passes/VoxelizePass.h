@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/RenderPass.h"
+#include "core/VoxelRegion.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 
@@ -23,8 +24,8 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
-    void accumulate(FrameContext& frame, bool dynamicMeshes);
-    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer);
+    void accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region);
+    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region);
 
     gl::Program m_voxelize;
     gl::Program m_resolve;

@@ -10,6 +10,8 @@ layout(binding = 2) uniform sampler3D uEmission;
 layout(rgba16f, binding = 0) writeonly uniform image3D uRadiance;
 
 uniform int uResolution;
+uniform ivec3 uRegionOrigin; // only voxels whose light may have changed are re-injected
+uniform ivec3 uRegionSize;
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform bool uEmissionEnabled;
@@ -19,9 +21,9 @@ const float kPi = 3.14159265358979;
 
 void main()
 {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, ivec3(uResolution))))
+    if (any(greaterThanEqual(ivec3(gl_GlobalInvocationID), uRegionSize)))
         return;
+    ivec3 voxel = uRegionOrigin + ivec3(gl_GlobalInvocationID);
     vec4 albedo = texelFetch(uAlbedo, voxel, 0);
     if (albedo.a <= 0.0) {
         imageStore(uRadiance, voxel, vec4(0.0));

@@ -14,6 +14,8 @@ layout(binding = 2) uniform sampler3D uStaticEmission;
 
 uniform int uResolution;
 uniform bool uMergeStatic;
+uniform ivec3 uRegionOrigin; // only the region a moving object touched is resolved
+uniform ivec3 uRegionSize;
 
 float acc(ivec3 voxel, int slot)
 {
@@ -22,9 +24,9 @@ float acc(ivec3 voxel, int slot)
 
 void main()
 {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, ivec3(uResolution))))
+    if (any(greaterThanEqual(ivec3(gl_GlobalInvocationID), uRegionSize)))
         return;
+    ivec3 voxel = uRegionOrigin + ivec3(gl_GlobalInvocationID);
     float count = acc(voxel, ACC_COUNT);
     vec4 albedo = vec4(0.0), normal = vec4(0.0), emission = vec4(0.0);
     if (count > 0.0) {

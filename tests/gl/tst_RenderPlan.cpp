@@ -193,6 +193,19 @@ void RenderPlanTest::glossyMaterialAddsSpecularCones()
     QVERIFY(pass("cone trace").reason.find("specular cones") != std::string::npos);
     QVERIFY(pass("cone trace").reason.find("no specular") == std::string::npos);
     expectSameAsForced("glossy material");
+    // Voxels hold no specular: making the material matte again touches per-pixel work only.
+    for (std::size_t m = 0; m < m_scene.materials.size(); ++m)
+        if (m_scene.materials[m].name == "white") {
+            render::Material matte = m_gl.renderer->scene().materials[m];
+            matte.specular = glm::vec3(0.0f);
+            matte.shininess = 0.0f;
+            m_gl.renderer->setMaterial(m, matte);
+        }
+    planned();
+    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+        expectAction(name, "reused");
+    QVERIFY(pass("cone trace").reason.find("no specular cones") != std::string::npos);
+    expectSameAsForced("glossy material made matte");
 }
 
 void RenderPlanTest::voxelSettingsRebuildEverything()
