@@ -178,8 +178,8 @@ void Renderer::setMeshTransform(std::size_t mesh, const glm::mat4& transform)
         return;
     const bool dynamic = m_state->scene->scene().meshes[mesh].dynamic;
     m_state->scene->setTransform(mesh, transform);
+    // The shadow pass keys on geometry versions too, so the maps follow the move.
     ++(dynamic ? m_state->versions.dynamicGeometry : m_state->versions.staticGeometry);
-    ++m_state->versions.lightPlacement; // shadows move with the geometry
 }
 
 void Renderer::setMaterial(std::size_t index, const Material& material)

@@ -39,37 +39,37 @@ PassDecision ShadowMapPass::plan(const FrameContext& frame)
     return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "no valid output yet" : "lights or geometry changed"};
 }
 
-void ShadowMapPass::execute(FrameContext& frame)
+void ShadowMapPass::ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer)
 {
-    if (!m_program)
-        m_program = frame.shaders.build({"shadow depth", {"shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag"}, {}});
-    m_key = keyOf(frame);
-    const Scene& scene = frame.scene.scene();
-    ShadowMaps& shadows = frame.shadows;
-    const int size = frame.settings.shadowMapSize;
-    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
-    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     if (shadows.size != size || shadows.pointDepth.depth() != 6 * std::max(points, 1)
         || shadows.directionalDepth.depth() != std::max(directionals, 1)) {
         shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
         shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
         shadows.size = size;
+        m_staticPoint = gl::Texture();
+        m_staticDirectional = gl::Texture();
+        m_staticKey = {};
+    }
+    if (staticLayer && !m_staticPoint) {
+        m_staticPoint = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
+        m_staticDirectional = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
+        m_staticKey = {};
     }
     if (!shadows.framebuffer)
         shadows.framebuffer = gl::Framebuffer::create();
-    const Aabb bounds = scene.bounds();
-    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
-    shadows.pointFar = 0.0f;
-    for (int i = 0; i < points; ++i) {
-        const glm::vec3 p = scene.pointLights[std::size_t(i)].position;
-        shadows.pointFar = std::max(shadows.pointFar, glm::length(p - bounds.center()) + radius);
-    }
-    shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-3f);
+}
 
+void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
+    MeshFilter filter, bool clear)
+{
+    const Scene& scene = frame.scene.scene();
+    ShadowMaps& shadows = frame.shadows;
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    glViewport(0, 0, size, size);
+    glViewport(0, 0, shadows.size, shadows.size);
     shadows.framebuffer.bind();
     const float clearDepth = 1.0f;
     // Standard cube-map face orientation, so texture(samplerCubeArray, direction) finds the right texel.
@@ -83,34 +83,77 @@ void ShadowMapPass::execute(FrameContext& frame)
         const PointLight& light = scene.pointLights[std::size_t(i)];
         m_program.set("uLightPosition", light.position);
         for (int face = 0; face < 6; ++face) {
-            shadows.framebuffer.attachDepthLayer(shadows.pointDepth, 6 * i + face);
+            shadows.framebuffer.attachDepthLayer(point, 6 * i + face);
             shadows.framebuffer.finish(0);
-            glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+            if (clear)
+                glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
             if (!light.castsShadows)
                 continue;
             const glm::mat4 view = glm::lookAt(light.position, light.position + kFaceDirection[face], kFaceUp[face]);
             m_program.set("uViewProjection", cubeProjection * view);
-            frame.scene.draw(m_program, MeshFilter::All, 0);
+            frame.scene.draw(m_program, filter, 0);
         }
     }
-    shadows.directionalMatrices.clear();
     m_program.set("uLinearDistance", 0);
     for (int i = 0; i < directionals; ++i) {
-        const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
-        const glm::vec3 dir = glm::normalize(light.direction);
-        const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-        const glm::mat4 view = glm::lookAt(bounds.center() - dir * (2.0f * radius), bounds.center(), up);
-        const glm::mat4 projection = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f);
-        shadows.directionalMatrices.push_back(projection * view);
-        shadows.framebuffer.attachDepthLayer(shadows.directionalDepth, i);
+        shadows.framebuffer.attachDepthLayer(directional, i);
         shadows.framebuffer.finish(0);
-        glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
-        if (!light.castsShadows)
+        if (clear)
+            glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
+        if (!scene.directionalLights[std::size_t(i)].castsShadows)
             continue;
-        m_program.set("uViewProjection", shadows.directionalMatrices.back());
-        frame.scene.draw(m_program, MeshFilter::All, 0);
+        m_program.set("uViewProjection", shadows.directionalMatrices[std::size_t(i)]);
+        frame.scene.draw(m_program, filter, 0);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ShadowMapPass::execute(FrameContext& frame)
+{
+    if (!m_program)
+        m_program = frame.shaders.build({"shadow depth", {"shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag"}, {}});
+    m_key = keyOf(frame);
+    const Scene& scene = frame.scene.scene();
+    ShadowMaps& shadows = frame.shadows;
+    const int size = frame.settings.shadowMapSize;
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    const bool dynamicLayer = frame.scene.hasDynamicMeshes();
+    ensureTextures(shadows, size, points, directionals, dynamicLayer);
+
+    // Depth ranges come from the voxel grid, which only changes with a static rebuild: the static layer's
+    // distances stay valid while a dynamic object moves.
+    Aabb bounds;
+    bounds.extend(frame.voxels.frame.origin);
+    bounds.extend(frame.voxels.frame.origin + glm::vec3(frame.voxels.frame.extent));
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    shadows.pointFar = 0.0f;
+    for (int i = 0; i < points; ++i)
+        shadows.pointFar = std::max(shadows.pointFar, glm::length(scene.pointLights[std::size_t(i)].position - bounds.center()) + radius);
+    shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-3f);
+    shadows.directionalMatrices.clear();
+    for (int i = 0; i < directionals; ++i) {
+        const glm::vec3 dir = glm::normalize(scene.directionalLights[std::size_t(i)].direction);
+        const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+        const glm::mat4 view = glm::lookAt(bounds.center() - dir * (2.0f * radius), bounds.center(), up);
+        shadows.directionalMatrices.push_back(glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) * view);
+    }
+
+    if (!dynamicLayer) {
+        drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::All, true);
+    } else {
+        // Static casters are drawn once into their own maps; a moving object costs a copy and its own draw.
+        const std::array<std::uint64_t, 3> staticKey{frame.versions.staticGeometry, frame.versions.lightPlacement, std::uint64_t(size)};
+        if (staticKey != m_staticKey) {
+            drawMaps(frame, m_staticPoint, m_staticDirectional, MeshFilter::Static, true);
+            m_staticKey = staticKey;
+        }
+        glCopyImageSubData(m_staticPoint.id(), GL_TEXTURE_CUBE_MAP_ARRAY, 0, 0, 0, 0, shadows.pointDepth.id(),
+            GL_TEXTURE_CUBE_MAP_ARRAY, 0, 0, 0, 0, size, size, shadows.pointDepth.depth());
+        glCopyImageSubData(m_staticDirectional.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, shadows.directionalDepth.id(),
+            GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, size, size, shadows.directionalDepth.depth());
+        drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::Dynamic, false);
+    }
     // llvmpipe (Mesa 22.3) lets later passes sample these maps before the queued depth rendering into them
     // has finished (tests/gl/tst_RenderPlan caught stale shadows after a light moved; glFlush was not
     // enough). Waiting here costs little: it happens only in frames that redraw the shadow maps.

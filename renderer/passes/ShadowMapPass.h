@@ -1,7 +1,10 @@
 #pragma once
 
 #include "core/RenderPass.h"
+#include "core/FrameResources.h"
+#include "core/GpuScene.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 
 #include <array>
 #include <cstdint>
@@ -15,11 +18,21 @@ public:
     PassDeclaration declare() const override { return {{}, {Resource::ShadowMaps}}; }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
-    void invalidate() override { m_key = {}; }
+    void invalidate() override
+    {
+        m_key = {};
+        m_staticKey = {};
+    }
 
 private:
+    void ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer);
+    void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional, MeshFilter filter, bool clear);
+
     gl::Program m_program;
+    gl::Texture m_staticPoint;       ///< static casters only, when dynamic meshes exist
+    gl::Texture m_staticDirectional;
     std::array<std::uint64_t, 4> m_key{};
+    std::array<std::uint64_t, 3> m_staticKey{};
 };
 
 } // namespace vct::render
