@@ -20,6 +20,12 @@ namespace vct::render {
 struct ChangeVersions {
     std::uint64_t staticGeometry = 1; ///< Static meshes, their materials, or the grid.
     std::uint64_t dynamicGeometry = 1;
+    std::uint64_t staticMaterials = 0;  ///< Albedo/emission of a material a static mesh uses: voxels only.
+    std::uint64_t dynamicMaterials = 0; ///< The same for dynamic meshes.
+
+    /** What the static and the dynamic voxel layers depend on; each grows whenever one of its parts does. */
+    std::uint64_t staticVoxels() const { return staticGeometry + staticMaterials; }
+    std::uint64_t dynamicVoxels() const { return dynamicGeometry + dynamicMaterials; }
     std::uint64_t lightPlacement = 1; ///< Light count, positions, directions, shadow flags: shadow maps.
     std::uint64_t lightValues = 1;    ///< Anything about lights, intensities included: injection.
     std::uint64_t shading = 1; ///< Settings that change injection (emission toggle).

@@ -196,10 +196,11 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
     for (const Mesh& mesh : m_state->scene->scene().meshes)
         if (mesh.material == int(index))
             (mesh.dynamic ? usedDynamic : usedStatic) = true;
+    // Materials do not move geometry: shadow maps stay.
     if (usedStatic)
-        ++m_state->versions.staticGeometry;
+        ++m_state->versions.staticMaterials;
     if (usedDynamic)
-        ++m_state->versions.dynamicGeometry;
+        ++m_state->versions.dynamicMaterials;
 }
 
 void Renderer::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)

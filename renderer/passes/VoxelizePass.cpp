@@ -21,9 +21,9 @@ PassDecision VoxelizePass::plan(const FrameContext& frame)
 {
     if (m_staticVersion == 0)
         return {PassDecision::Action::Run, "no valid output yet"};
-    if (m_staticVersion != frame.versions.staticGeometry)
+    if (m_staticVersion != frame.versions.staticVoxels())
         return {PassDecision::Action::Run, "static geometry, materials or grid changed"};
-    if (m_dynamicVersion != frame.versions.dynamicGeometry)
+    if (m_dynamicVersion != frame.versions.dynamicVoxels())
         return {PassDecision::Action::Run, "a dynamic object moved: static voxels kept, dynamic ones redone"};
     return {PassDecision::Action::Reuse, "geometry unchanged"};
 }
@@ -114,12 +114,12 @@ void VoxelizePass::execute(FrameContext& frame)
     const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
-    const bool staticChanged = m_staticVersion != frame.versions.staticGeometry;
+    const bool staticChanged = m_staticVersion != frame.versions.staticVoxels();
     if (staticChanged) {
         accumulate(frame, false, whole);
         // Without dynamic meshes the static layer is the final one: resolve straight into it.
         resolve(frame, false, hasDynamic, whole);
-        m_staticVersion = frame.versions.staticGeometry;
+        m_staticVersion = frame.versions.staticVoxels();
     }
     VoxelRegion changed = whole;
     if (hasDynamic) {
@@ -138,7 +138,7 @@ void VoxelizePass::execute(FrameContext& frame)
     v.onlyDynamicChanged = !staticChanged;
     v.previousDynamicBounds = v.dynamicBounds;
     v.dynamicBounds = dynamicBounds;
-    m_dynamicVersion = frame.versions.dynamicGeometry;
+    m_dynamicVersion = frame.versions.dynamicVoxels();
     ++v.materialsVersion;
 }
 } // namespace vct::render
