@@ -34,7 +34,7 @@ QLabel* makeValueLabel(const QString& objectName)
 } // namespace
 
 StatsDock::StatsDock(QWidget* parent)
-    : QDockWidget(tr("Stats"), parent)
+    : QDockWidget(tr("Render plan & stats"), parent)
 {
     setObjectName(QStringLiteral("StatsDock"));
     auto* body = new QWidget(this);
