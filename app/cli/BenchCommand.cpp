@@ -63,13 +63,8 @@ int BenchCommand::run(int argc, char** argv)
         return fail(1, error);
     QStringList assignments = parser.values(setOption);
     assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));
-    for (const QString& assignment : assignments) {
-        const int eq = assignment.indexOf(QLatin1Char('='));
-        const std::string problem = eq <= 0 ? std::string("--set expects key=value")
-                                            : settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
-        if (!problem.empty())
-            return fail(1, QString::fromStdString(problem));
-    }
+    if (const QString problem = applySettingAssignments(assignments, settings); !problem.isEmpty())
+        return fail(1, problem);
 
     std::string contextError;
     auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);

@@ -1,5 +1,6 @@
 #include "cli/PlanBenchmark.h"
 
+#include "cli/Statistics.h"
 #include "core/Renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,14 +13,6 @@ namespace vct::cli {
 
 namespace {
 
-double median(std::vector<double> values)
-{
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 int largestStaticMesh(const render::Scene& scene)
 {

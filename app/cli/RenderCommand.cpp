@@ -81,14 +81,8 @@ int RenderCommand::run(int argc, char** argv)
     QStringList assignments = parser.values(setOption);
     if (parser.isSet(voxelOption))
         assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));
-    for (const QString& assignment : assignments) {
-        const int eq = assignment.indexOf(QLatin1Char('='));
-        if (eq <= 0)
-            return fail(1, QStringLiteral("--set expects key=value, got '%1'").arg(assignment));
-        const std::string problem = settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
-        if (!problem.empty())
-            return fail(1, QString::fromStdString(problem));
-    }
+    if (const QString problem = applySettingAssignments(assignments, settings); !problem.isEmpty())
+        return fail(1, problem);
     bool framesOk = false;
     const int frames = parser.value(framesOption).toInt(&framesOk);
     if (!framesOk || frames < 1 || frames > 1000)

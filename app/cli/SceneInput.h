@@ -5,6 +5,7 @@
 #include "scene/Scene.h"
 
 #include <QString>
+#include <QStringList>
 
 namespace vct::cli {
 
@@ -14,5 +15,8 @@ namespace vct::cli {
  */
 bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSettings& settings,
     doc::SceneLoadInfo& info, QString* error);
+
+/** Applies `key=value` assignments (from --set) in order; returns an empty string or the first problem. */
+QString applySettingAssignments(const QStringList& assignments, render::RenderSettings& settings);
 
 } // namespace vct::cli

@@ -1,23 +1,10 @@
 #include "cli/StatsJson.h"
 
+#include "cli/Statistics.h"
+
 #include <QJsonArray>
 
-#include <algorithm>
-
 namespace vct::cli {
-
-namespace {
-
-double median(std::vector<double> values)
-{
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
-} // namespace
 
 QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const render::RenderSettings& settings,
     const QString& scene, const QString& glDescription)

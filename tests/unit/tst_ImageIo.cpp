@@ -1,3 +1,4 @@
+#include "FileSizeLimit.h"
 #include "TestSupport.h"
 
 #include "imageio/ExrFile.h"
@@ -113,31 +114,6 @@ QStringList directoryEntries(const std::filesystem::path& file)
 {
     return QDir(QString::fromStdString(file.parent_path().string())).entryList(QDir::Files | QDir::Hidden);
 }
-
-/** Caps the size of files this process may write, so the next write fails at the OS level even as root. */
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_saved);
-        // Without this, exceeding the limit kills the process with SIGXFSZ instead of failing write().
-        m_savedHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limit = m_saved;
-        limit.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limit) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_saved);
-        std::signal(SIGXFSZ, m_savedHandler);
-    }
-    bool isActive() const { return m_active; }
-
-private:
-    rlimit m_saved {};
-    void (*m_savedHandler)(int) = nullptr;
-    bool m_active = false;
-};
 
 } // namespace
 
@@ -455,7 +431,7 @@ void tst_ImageIo::ioFailureKeepsExistingFile()
         p = glm::vec3(next(), next(), next());
     bool written = true;
     {
-        FileSizeLimit limit(4096);
+        vct::test::FileSizeLimit limit(4096);
         QVERIFY(limit.isActive());
         written = ImageFile::write(path, big, 1.0f, &error);
     }

@@ -1,3 +1,4 @@
+#include "FileSizeLimit.h"
 #include "TestSupport.h"
 
 #include "Document.h"
@@ -21,31 +22,6 @@ using vct::doc::ProjectFile;
 using vct::doc::sameDocument;
 
 namespace {
-
-/** Caps the size of files this process may write, so the next write fails at the OS level even as root. */
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_saved);
-        // Without this, exceeding the limit kills the process with SIGXFSZ instead of failing write().
-        m_savedHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limit = m_saved;
-        limit.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limit) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_saved);
-        std::signal(SIGXFSZ, m_savedHandler);
-    }
-    bool isActive() const { return m_active; }
-
-private:
-    rlimit m_saved {};
-    void (*m_savedHandler)(int) = nullptr;
-    bool m_active = false;
-};
 
 QString testDir(const QString& name)
 {
@@ -392,7 +368,7 @@ private slots:
         QVERIFY(makeEditedCornell(doc));
         QVERIFY(doc.isModified());
         {
-            FileSizeLimit limit(rlim_t(original.size() / 4));
+            vct::test::FileSizeLimit limit(rlim_t(original.size() / 4));
             if (!limit.isActive())
                 QSKIP("setrlimit(RLIMIT_FSIZE) is not available");
             QVERIFY(!doc.saveProject(path, &error));
