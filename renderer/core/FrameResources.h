@@ -51,6 +51,7 @@ struct ShadowMaps {
 /** Per-pixel buffers of the current output size. */
 struct ScreenTargets {
     int width = 0, height = 0;
+    int indirectDivisor = 1; ///< the indirect targets are width/divisor x height/divisor (rounded up)
     gl::Texture position;  ///< rgba32f: world position, a = 1 where geometry was hit.
     gl::Texture normal;    ///< rgba16f: world shading normal, a = Phong exponent.
     gl::Texture albedo;    ///< rgba16f: linear albedo.

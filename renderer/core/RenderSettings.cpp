@@ -89,6 +89,7 @@ const std::map<std::string, Field>& fields()
         t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
         t["step"] = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
         t["max_distance"] = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
+        t["indirect_res"] = makeField(&RenderSettings::indirectDivisor, "trace indirect light at 1/N resolution per axis: 1, 2 or 4");
         t["cone_offset"] = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
         t["direct"] = makeField(&RenderSettings::direct, "direct light (on/off)");
         t["indirect_diffuse"] = makeField(&RenderSettings::indirectDiffuse, "indirect diffuse cones (on/off)");
@@ -162,6 +163,8 @@ std::string RenderSettings::validate() const
         return "specular_aperture must be between 0 and 180 degrees (exclusive)";
     if (!(stepFactor > 0.0f))
         return "step must be greater than 0";
+    if (indirectDivisor != 1 && indirectDivisor != 2 && indirectDivisor != 4)
+        return "indirect_res must be 1, 2 or 4";
     if (!(coneOffsetVoxels >= 0.0f))
         return "cone_offset must be 0 or more";
     if (shadowMapSize < 64 || shadowMapSize > 8192)

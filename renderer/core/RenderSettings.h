@@ -24,6 +24,9 @@ struct RenderSettings {
     float stepFactor = 1.0f;            ///< beta: step = cone diameter * beta.
     float maxDistance = -1.0f;          ///< Cone length in metres; negative = the grid's diagonal.
     float coneOffsetVoxels = 1.5f;      ///< Cone origins start this many voxels along the normal.
+    /// Indirect light is traced for one pixel in divisor x divisor (1, 2 or 4) and upsampled with depth- and
+    /// normal-aware weights: indirect light varies slowly, and the cones are most of a frame's cost.
+    int indirectDivisor = 2;
     bool direct = true;
     bool indirectDiffuse = true;
     bool indirectSpecular = true;

@@ -53,12 +53,13 @@ std::unique_ptr<Pipeline> makePipeline()
     return std::make_unique<Pipeline>(std::move(passes));
 }
 
-void resizeScreen(ScreenTargets& s, int width, int height)
+void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
 {
-    if (s.width == width && s.height == height && s.final)
+    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.final)
         return;
     s.width = width;
     s.height = height;
+    s.indirectDivisor = divisor;
     s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.normal = gl::Texture::create2D(GL_RGBA16F, width, height);
     s.albedo = gl::Texture::create2D(GL_RGBA16F, width, height);
@@ -71,8 +72,9 @@ void resizeScreen(ScreenTargets& s, int width, int height)
         s.gbuffer.attachColor(i++, *t);
     s.gbuffer.attachDepth(s.depth);
     s.gbuffer.finish(5);
-    s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, width, height);
-    s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, width, height);
+    const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
+    s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
+    s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
     s.indirectTarget = gl::Framebuffer::create();
     s.indirectTarget.attachColor(0, s.indirectDiffuse);
     s.indirectTarget.attachColor(1, s.indirectSpecular);
@@ -239,7 +241,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         st.voxels.frame = wanted;
         ++st.versions.staticGeometry;
     }
-    resizeScreen(st.screen, width, height);
+    resizeScreen(st.screen, width, height, m_settings.indirectDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
         camera, glm::mat4(1.0f), glm::mat4(1.0f)};

@@ -24,6 +24,7 @@ void CompositePass::execute(FrameContext& frame)
     m_program.set("uAoAvailable", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
     m_program.set("uEmissionEnabled", settings.emission ? 1 : 0);
     m_program.set("uView", int(settings.view));
+    m_program.set("uDivisor", s.indirectDivisor);
     // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
     m_program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
     s.position.bindUnit(0);

@@ -69,8 +69,10 @@ void ConeTracePass::execute(FrameContext& frame)
     if (anisotropic)
         for (std::size_t d = 0; d < 6; ++d)
             v.directional[d].bindUnit(GLuint(6 + d));
+    program.set("uDivisor", s.indirectDivisor);
+    program.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     s.indirectTarget.bind();
-    glViewport(0, 0, s.width, s.height);
+    glViewport(0, 0, s.indirectDiffuse.width(), s.indirectDiffuse.height());
     glDisable(GL_DEPTH_TEST);
     program.use();
     m_emptyVao.bind();

@@ -36,6 +36,8 @@ uniform bool uSpecularEnabled;
 uniform bool uAoEnabled;          // accumulate occlusion only when the AO view shows it
 uniform float uAoDistance;        // occluders beyond this count half
 uniform vec3 uCameraPosition;
+uniform int uDivisor;     // one traced pixel stands for uDivisor x uDivisor screen pixels
+uniform ivec3 uFullSize;  // full-resolution width, height
 
 layout(location = 0) out vec4 oDiffuse;  // rgb: sum_i w_i L_i, a: ambient visibility
 layout(location = 1) out vec4 oSpecular;
@@ -98,7 +100,8 @@ void tangentBasis(vec3 n, out vec3 t, out vec3 b)
 
 void main()
 {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // Trace from the centre pixel of the block this low-resolution pixel covers; composite upsamples.
+    ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, uFullSize.xy - 1);
     vec4 position = texelFetch(gPosition, pixel, 0);
     oDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
     oSpecular = vec4(0.0);
