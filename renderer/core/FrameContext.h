@@ -41,6 +41,8 @@ struct FrameContext {
     ShadowMaps& shadows;
     ScreenTargets& screen;
     const ConeSet& diffuseCones;
+    /// World bounds of the static meshes whose material changed since the last frame (their voxels only).
+    Aabb staticMaterialEdits;
     Camera camera;
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};

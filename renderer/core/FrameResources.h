@@ -29,7 +29,8 @@ struct VoxelVolume {
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
     VoxelRegion changedRegion;
-    bool onlyDynamicChanged = false;
+    bool onlyDynamicChanged = false; ///< false after a static rebuild (changedRegion is then everything)
+    bool dynamicMoved = false;        ///< a dynamic object moved or changed material: its shadow moved too
     Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.

@@ -32,6 +32,7 @@ struct Renderer::State {
     ScreenTargets screen;
     ConeSet cones = ConeSet::diffuse(5);
     Aabb gridBounds; ///< empty: fit the scene
+    Aabb staticMaterialEdits; ///< since the last frame
     VoxelInspector inspector;
     gl::Program presentProgram;
     gl::VertexArray emptyVao;
@@ -196,8 +197,12 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
     // Only the voxel layers holding a mesh of this material are redone.
     bool usedStatic = false, usedDynamic = false;
     for (const Mesh& mesh : m_state->scene->scene().meshes)
-        if (mesh.material == int(index))
+        if (mesh.material == int(index)) {
             (mesh.dynamic ? usedDynamic : usedStatic) = true;
+            if (!mesh.dynamic)
+                for (const glm::vec3& p : mesh.positions)
+                    m_state->staticMaterialEdits.extend(glm::vec3(mesh.transform * glm::vec4(p, 1.0f)));
+        }
     // Materials do not move geometry: shadow maps stay.
     if (usedStatic)
         ++m_state->versions.staticMaterials;
@@ -244,12 +249,13 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
-        camera, glm::mat4(1.0f), glm::mat4(1.0f)};
+        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f)};
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     frame.view = matrices.view;
     frame.projection = matrices.projection;
 
     FrameStats stats = st.pipeline->execute(frame);
+    st.staticMaterialEdits = Aabb{};
     stats.voxelBytes = st.voxels.byteSize();
     stats.width = width;
     stats.height = height;

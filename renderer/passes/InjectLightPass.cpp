@@ -54,6 +54,8 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const bool sameLights = m_key != decltype(m_key){} && key[1] == m_key[1] && key[2] == m_key[2];
     if (!sameLights || !v.onlyDynamicChanged)
         return whole;
+    if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed
+        return v.changedRegion;
     const Scene& scene = frame.scene.scene();
     return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, v.frame, 2))
         .united(shadowReach(v.previousDynamicBounds, scene, v.frame, 2));
@@ -67,8 +69,8 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
     const VoxelRegion region = regionToInject(frame);
     if (region.size() != VoxelRegion::whole(frame.voxels.frame.resolution).size()) {
         const glm::ivec3 s = region.size();
-        reason = "a dynamic object moved: re-injecting " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
-            + std::to_string(s.z) + " voxels around it and its shadow";
+        reason = "re-injecting only the " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
+            + std::to_string(s.z) + " voxels that changed" + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
     if (!FrameRules::emissionNeeded(frame))
         reason += "; no emission to inject";

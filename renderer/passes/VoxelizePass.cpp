@@ -19,10 +19,12 @@ constexpr int kDynamicMargin = 2;
 
 PassDecision VoxelizePass::plan(const FrameContext& frame)
 {
-    if (m_staticVersion == 0)
+    if (m_staticGeometry == 0)
         return {PassDecision::Action::Run, "no valid output yet"};
-    if (m_staticVersion != frame.versions.staticVoxels())
-        return {PassDecision::Action::Run, "static geometry, materials or grid changed"};
+    if (m_staticGeometry != frame.versions.staticGeometry)
+        return {PassDecision::Action::Run, "static geometry or grid changed"};
+    if (m_staticMaterials != frame.versions.staticMaterials)
+        return {PassDecision::Action::Run, "a static material changed: re-voxelizing the objects that use it"};
     if (m_dynamicVersion != frame.versions.dynamicVoxels())
         return {PassDecision::Action::Run, "a dynamic object moved: static voxels kept, dynamic ones redone"};
     return {PassDecision::Action::Reuse, "geometry unchanged"};
@@ -77,6 +79,8 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
     m_voxelize.set("uGridOrigin", v.frame.origin);
     m_voxelize.set("uGridExtent", v.frame.extent);
     m_voxelize.set("uResolution", res);
+    m_voxelize.set("uRegionLo", region.lo);
+    m_voxelize.set("uRegionHi", region.hi);
     // With hardware conservative raster the geometry shader need not enlarge triangles itself.
     m_voxelize.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
@@ -114,20 +118,31 @@ void VoxelizePass::execute(FrameContext& frame)
     const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
-    const bool staticChanged = m_staticVersion != frame.versions.staticVoxels();
-    if (staticChanged) {
-        accumulate(frame, false, whole);
+    const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry;
+    const bool staticMaterialChanged = !staticChanged && m_staticMaterials != frame.versions.staticMaterials;
+    // A material edit redoes the static voxels around the meshes that use it: every static mesh is drawn, but
+    // fragments outside that box are dropped and only the box is resolved.
+    const VoxelRegion staticRegion = staticChanged ? whole
+        : staticMaterialChanged                    ? VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin)
+                                                   : VoxelRegion{};
+    if (!staticRegion.isEmpty()) {
+        accumulate(frame, false, staticRegion);
         // Without dynamic meshes the static layer is the final one: resolve straight into it.
-        resolve(frame, false, hasDynamic, whole);
-        m_staticVersion = frame.versions.staticVoxels();
+        resolve(frame, false, hasDynamic, staticRegion);
     }
-    VoxelRegion changed = whole;
+    m_staticGeometry = frame.versions.staticGeometry;
+    m_staticMaterials = frame.versions.staticMaterials;
+    VoxelRegion changed = staticRegion;
+    bool dynamicMoved = false;
     if (hasDynamic) {
-        // After a static rebuild every voxel is new; otherwise only where the objects were and are now.
-        const VoxelRegion region = staticChanged
-            ? whole
-            : VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin)
-                  .united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+        // After a static rebuild every voxel is new; otherwise where the objects were and are now, plus
+        // wherever the static layer changed (the final textures merge both there).
+        const VoxelRegion dynamicRegion = VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin)
+                                              .united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+        const VoxelRegion region = staticChanged ? whole
+            : m_dynamicVersion != frame.versions.dynamicVoxels() ? dynamicRegion.united(staticRegion)
+                                                                 : staticRegion;
+        dynamicMoved = m_dynamicVersion != frame.versions.dynamicVoxels();
         if (!region.isEmpty()) {
             accumulate(frame, true, region);
             resolve(frame, true, false, region);
@@ -136,6 +151,7 @@ void VoxelizePass::execute(FrameContext& frame)
     }
     v.changedRegion = changed;
     v.onlyDynamicChanged = !staticChanged;
+    v.dynamicMoved = dynamicMoved;
     v.previousDynamicBounds = v.dynamicBounds;
     v.dynamicBounds = dynamicBounds;
     m_dynamicVersion = frame.versions.dynamicVoxels();

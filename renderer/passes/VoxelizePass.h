@@ -20,7 +20,7 @@ public:
     PassDeclaration declare() const override { return {{}, {Resource::VoxelMaterials}}; }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
-    void invalidate() override { m_staticVersion = m_dynamicVersion = 0; }
+    void invalidate() override { m_staticGeometry = m_staticMaterials = m_dynamicVersion = 0; }
 
 private:
     void ensureResources(FrameContext& frame);
@@ -30,7 +30,8 @@ private:
     gl::Program m_voxelize;
     gl::Program m_resolve;
     gl::Framebuffer m_framebuffer;
-    std::uint64_t m_staticVersion = 0;
+    std::uint64_t m_staticGeometry = 0;
+    std::uint64_t m_staticMaterials = 0;
     std::uint64_t m_dynamicVersion = 0;
 };
 

@@ -15,6 +15,8 @@ uniform vec3 uAlbedo;
 uniform vec3 uEmission;
 layout(binding = 0) uniform sampler2D uAlbedoTexture;
 layout(r32f, binding = 0) uniform coherent image3D uAccumulators;
+uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept: their sums were not cleared
+uniform ivec3 uRegionHi;
 
 ivec3 unswizzle(ivec3 c, int axis)
 {
@@ -43,6 +45,8 @@ void main()
     int last = min(int(floor(depth + spread)), uResolution - 1);
     for (int z = first; z <= last; ++z) {
         ivec3 voxel = unswizzle(ivec3(ivec2(gl_FragCoord.xy), z), gAxis);
+        if (any(lessThan(voxel, uRegionLo)) || any(greaterThanEqual(voxel, uRegionHi)))
+            continue;
         add(voxel, ACC_ALBEDO_R, albedo.r);
         add(voxel, ACC_ALBEDO_G, albedo.g);
         add(voxel, ACC_ALBEDO_B, albedo.b);
