@@ -61,9 +61,11 @@ int RenderCommand::run(int argc, char** argv)
     const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
     const QCommandLineOption statsOption(QStringLiteral("stats"), QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."), QStringLiteral("stats.json"));
     const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames (every pass re-run); --stats gives the median of frames 2..N, leaving out the first, which compiles shaders. Default 1."), QStringLiteral("N"), QStringLiteral("1"));
+    const QCommandLineOption checkFiniteOption(QStringLiteral("check-finite"),
+        QStringLiteral("Count NaN/Inf texels in every float render target and voxel level; exit 4 if any."));
     const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
-        statsOption, framesOption, glOption});
+        statsOption, framesOption, checkFiniteOption, glOption});
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -132,6 +134,7 @@ int RenderCommand::run(int argc, char** argv)
 
     std::vector<render::FrameStats> timed;
     render::RadianceImage image;
+    std::uint64_t nonFinite = 0;
     try {
         render::Renderer renderer(context->procAddressFunction());
         renderer.setSettings(settings);
@@ -144,6 +147,15 @@ int RenderCommand::run(int argc, char** argv)
                 timed.push_back(stats);
         }
         image = renderer.readFrame();
+        if (parser.isSet(checkFiniteOption)) {
+            for (const render::NonFiniteCount& c : renderer.countNonFinite()) {
+                nonFinite += c.count;
+                if (c.count)
+                    std::fprintf(stderr, "vct-render: %llu non-finite texels in %s\n", static_cast<unsigned long long>(c.count), c.resource.c_str());
+            }
+            std::printf("check-finite: %llu non-finite texels in all render targets and voxel levels\n",
+                static_cast<unsigned long long>(nonFinite));
+        }
         for (const std::string& message : renderer.takeGlErrors())
             std::fprintf(stderr, "vct-render: warning: %s\n", message.c_str());
     } catch (const std::exception& e) {
@@ -168,7 +180,7 @@ int RenderCommand::run(int argc, char** argv)
         std::printf("  total %.2f ms GPU, voxel memory %.1f MiB\n", json["total_gpu_ms"].toDouble(),
             json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0));
     }
-    return 0;
+    return nonFinite ? 4 : 0;
 }
 
 } // namespace vct::cli

@@ -1,6 +1,7 @@
 #include "core/Renderer.h"
 
 #include "core/ConeSet.h"
+#include "core/FiniteCheck.h"
 #include "core/FrameContext.h"
 #include "core/Pipeline.h"
 #include "core/ShaderLibrary.h"
@@ -34,6 +35,7 @@ struct Renderer::State {
     Aabb gridBounds; ///< empty: fit the scene
     Aabb staticMaterialEdits; ///< since the last frame
     VoxelInspector inspector;
+    FiniteCheck finiteCheck;
     gl::Program presentProgram;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
@@ -314,6 +316,11 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     return drawn;
+}
+
+std::vector<NonFiniteCount> Renderer::countNonFinite()
+{
+    return m_state->finiteCheck.run(*m_state->shaders, m_state->screen, m_state->voxels);
 }
 
 int Renderer::voxelLevelCount() const

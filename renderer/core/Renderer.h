@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/NonFiniteCount.h"
 #include "core/FrameStats.h"
 #include "core/RenderSettings.h"
 #include "core/VoxelChannel.h"
@@ -62,6 +63,8 @@ public:
      */
     std::size_t drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer, int x,
         int y, int width, int height, float exposure);
+    /** NaN/Inf texel counts of every float render target and voxel level (a readback per resource). */
+    std::vector<NonFiniteCount> countNonFinite();
     /** Mip levels of the radiance volume (0 before the first frame). */
     int voxelLevelCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */

@@ -1,0 +1,55 @@
+#include "core/FiniteCheck.h"
+
+#include <algorithm>
+
+namespace vct::render {
+
+std::uint64_t FiniteCheck::count(const gl::Texture& texture, int level)
+{
+    const bool volume = texture.target() == GL_TEXTURE_3D;
+    gl::Program& program = volume ? m_volume : m_flat;
+    const std::uint32_t zero = 0;
+    m_counter.upload(&zero, sizeof zero);
+    m_counter.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    texture.bindUnit(0);
+    program.use();
+    program.set("uLevel", level);
+    const int w = std::max(1, texture.width() >> level), h = std::max(1, texture.height() >> level);
+    const int d = volume ? std::max(1, texture.depth() >> level) : 1;
+    glDispatchCompute(GLuint((w + 3) / 4), GLuint((h + 3) / 4), GLuint((d + 3) / 4));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t result = 0;
+    glGetNamedBufferSubData(m_counter.id(), 0, sizeof result, &result);
+    return result;
+}
+
+std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels)
+{
+    if (!m_flat) {
+        m_flat = shaders.build({"count non-finite (2D)", {"check/CountNonFinite.comp"}, {}});
+        m_volume = shaders.build({"count non-finite (3D)", {"check/CountNonFinite.comp"}, {"VOLUME"}});
+        m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    std::vector<NonFiniteCount> counts;
+    // 8-bit targets cannot hold NaN or Inf, so only float ones are checked.
+    const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
+        {"g-buffer position", &screen.position}, {"g-buffer normal", &screen.normal},
+        {"g-buffer albedo", &screen.albedo}, {"g-buffer specular", &screen.specular},
+        {"g-buffer emission", &screen.emission}, {"indirect diffuse", &screen.indirectDiffuse},
+        {"indirect specular", &screen.indirectSpecular}, {"voxel normal", &voxels.normal},
+        {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};
+    for (const auto& [name, texture] : targets)
+        if (*texture)
+            counts.push_back({name, count(*texture, 0)});
+    if (voxels.radiance)
+        for (int level = 0; level < voxels.radiance.levels(); ++level)
+            counts.push_back({"radiance level " + std::to_string(level), count(voxels.radiance, level)});
+    for (std::size_t d = 0; d < voxels.directional.size(); ++d)
+        if (voxels.directional[d])
+            for (int level = 0; level < voxels.directional[d].levels(); ++level)
+                counts.push_back({"directional radiance " + std::to_string(d) + " level " + std::to_string(level + 1),
+                    count(voxels.directional[d], level)});
+    return counts;
+}
+
+} // namespace vct::render

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "core/FrameResources.h"
+#include "core/NonFiniteCount.h"
+#include "core/ShaderLibrary.h"
+#include "gl/Buffer.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vct::render {
+
+/**
+ * Counts non-finite values on the GPU in every float render target and every level of every float voxel
+ * texture, with one small readback per resource. For tests, `vct-render --check-finite` and the editor's
+ * overlay; never part of the frame loop.
+ */
+class FiniteCheck {
+public:
+    std::vector<NonFiniteCount> run(const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels);
+
+private:
+    std::uint64_t count(const gl::Texture& texture, int level);
+    gl::Program m_flat;
+    gl::Program m_volume;
+    gl::Buffer m_counter;
+};
+
+} // namespace vct::render
