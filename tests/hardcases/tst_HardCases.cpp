@@ -67,6 +67,8 @@ private slots:
     void settingsAtTheirLimits_data();
     void settingsAtTheirLimits();
     void whiteFurnace();
+    void smallChangesGiveSmallDifferences();
+    void finerGridsConverge();
 
 private:
     render::RadianceImage render(const render::Scene& scene, const render::RenderSettings& settings, int size = 32);
@@ -292,6 +294,44 @@ void HardCasesTest::whiteFurnace()
             outliers += std::abs(p.r - expected) > 0.15f * expected ? 1 : 0;
         QVERIFY2(outliers <= int(image.pixels.size() / 20), qPrintable(QString("%1 pixels off by more than 15%").arg(outliers)));
     }
+}
+
+// No popping: nudging the camera by 1e-4 of the scene or the light by a hundredth of a voxel changes the image
+// by little. Bound: relative MSE 1e-5, a hundred times what was measured (3e-8 and 1.3e-7), yet far below
+// what a pixel flipping across an edge would cost.
+void HardCasesTest::smallChangesGiveSmallDifferences()
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    render::Scene scene = room();
+    const render::RadianceImage base = render(scene, settings, 48);
+    render::Scene nudgedCamera = scene;
+    nudgedCamera.camera.position += glm::vec3(2e-4f, 0.0f, 0.0f); // the room is 2 units across
+    nudgedCamera.camera.lookAt += glm::vec3(2e-4f, 0.0f, 0.0f);
+    const double cameraError = io::ImageMetrics::relativeMse(render(nudgedCamera, settings, 48), base);
+    render::Scene nudgedLight = scene;
+    nudgedLight.pointLights[0].position.x += 0.01f * (2.0f / 30.0f); // a hundredth of a voxel
+    const double lightError = io::ImageMetrics::relativeMse(render(nudgedLight, settings, 48), base);
+    qInfo("camera moved 1e-4 of the room: relative MSE %.2e; light moved 1/100 voxel: %.2e", cameraError, lightError);
+    QVERIFY2(cameraError < 1e-5, qPrintable(QString::number(cameraError)));
+    QVERIFY2(lightError < 1e-5, qPrintable(QString::number(lightError)));
+}
+
+// Stepping the grid 64 -> 128 -> 256, the image approaches the finest one: the error shrinks monotonically.
+void HardCasesTest::finerGridsConverge()
+{
+    render::Scene scene = room();
+    std::vector<render::RadianceImage> images;
+    for (int resolution : {64, 128, 256}) {
+        render::RenderSettings settings;
+        settings.voxelResolution = resolution;
+        images.push_back(render(scene, settings, 48));
+        expectSane(images.back(), 10.0f);
+    }
+    const double coarse = io::ImageMetrics::relativeMse(images[0], images[2]);
+    const double middle = io::ImageMetrics::relativeMse(images[1], images[2]);
+    qInfo("relative MSE to the 256^3 image: 64^3 %.2e, 128^3 %.2e", coarse, middle);
+    QVERIFY2(middle < coarse, qPrintable(QString("%1 >= %2").arg(middle).arg(coarse)));
 }
 
 QTEST_GUILESS_MAIN(HardCasesTest)
