@@ -15,6 +15,8 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
+/// The dark room may show at most this share of the lit room's radiance (docs/STABILITY.md).
+constexpr double kThinWallLeakBound = 0.03;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by `offset`. */
 render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
@@ -69,6 +71,7 @@ private slots:
     void whiteFurnace();
     void smallChangesGiveSmallDifferences();
     void finerGridsConverge();
+    void thinWallLeak();
 
 private:
     render::RadianceImage render(const render::Scene& scene, const render::RenderSettings& settings, int size = 32);
@@ -332,6 +335,42 @@ void HardCasesTest::finerGridsConverge()
     const double middle = io::ImageMetrics::relativeMse(images[1], images[2]);
     qInfo("relative MSE to the 256^3 image: 64^3 %.2e, 128^3 %.2e", coarse, middle);
     QVERIFY2(middle < coarse, qPrintable(QString("%1 >= %2").arg(middle).arg(coarse)));
+}
+
+// Two rooms side by side, split by a wall a tenth of a voxel thick, a light in the left one. Direct light
+// cannot pass (shadow maps); indirect light leaks through the voxel the wall shares with both rooms. The
+// leak is the dark room's mean radiance over the lit room's, as each camera sees its own room.
+void HardCasesTest::thinWallLeak()
+{
+    render::Scene scene;
+    render::Material white;
+    white.albedo = glm::vec3(0.7f);
+    scene.materials = {white};
+    std::vector<glm::vec3> walls;
+    const auto add = [&](const std::vector<glm::vec3>& q) { walls.insert(walls.end(), q.begin(), q.end()); };
+    add(test::quad({-2, -1, 1}, {2, -1, 1}, {2, -1, -1}, {-2, -1, -1}));  // floor
+    add(test::quad({-2, 1, -1}, {2, 1, -1}, {2, 1, 1}, {-2, 1, 1}));      // ceiling
+    add(test::quad({-2, -1, -1}, {2, -1, -1}, {2, 1, -1}, {-2, 1, -1}));  // back
+    add(test::quad({2, -1, 1}, {-2, -1, 1}, {-2, 1, 1}, {2, 1, 1}));      // front
+    add(test::quad({-2, -1, 1}, {-2, -1, -1}, {-2, 1, -1}, {-2, 1, 1}));  // left end
+    add(test::quad({2, -1, -1}, {2, -1, 1}, {2, 1, 1}, {2, 1, -1}));      // right end
+    const float t = 0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f;           // half a tenth of a voxel
+    add(test::quad({-t, -1, -1}, {-t, -1, 1}, {-t, 1, 1}, {-t, 1, -1}));  // divider, facing the lit room
+    add(test::quad({t, -1, 1}, {t, -1, -1}, {t, 1, -1}, {t, 1, 1}));      // divider, facing the dark room
+    scene.meshes.push_back(test::makeTriangles(walls, 0));
+    scene.pointLights.push_back({{-1.0f, 0.5f, 0.0f}, glm::vec3(2.0f), true});
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    scene.camera = {{-1.0f, 0.0f, 0.9f}, {-1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
+    const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+    expectSane(m_gl.renderer->readFrame(), 10.0f);
+    scene.camera = {{1.0f, 0.0f, 0.9f}, {1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
+    const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+    expectSane(m_gl.renderer->readFrame(), 10.0f);
+    const double leak = dark / lit;
+    qInfo("thin wall: lit room %.4f, dark room %.4f, leak %.2f%%", lit, dark, 100.0 * leak);
+    QVERIFY(lit > 0.0);
+    QVERIFY2(leak < kThinWallLeakBound, qPrintable(QString::number(leak)));
 }
 
 QTEST_GUILESS_MAIN(HardCasesTest)
