@@ -1,6 +1,9 @@
 #include "QtAssimpIOStream.h"
 
+#include <algorithm>
+
 #include <cstring>
+#include <stdexcept>
 
 namespace vct::doc {
 
@@ -17,8 +20,20 @@ bool QtAssimpIOStream::open(const char* mode)
     return m_file.open(write ? QIODevice::WriteOnly : QIODevice::ReadOnly);
 }
 
+void QtAssimpIOStream::countOperation()
+{
+    // Some malformed files send Assimp 5.2's parsers into an endless read/seek loop that ignores failures
+    // (found by fuzzing a PLY header). Past a budget no real parse reaches, throw: Assimp's importer catches
+    // it and the import ends with this error instead of hanging the caller.
+    if (m_budget == 0)
+        m_budget = kOperationBudget + std::uint64_t(std::max<qint64>(m_file.size(), 0)); // one per byte at most
+    if (++m_operations > m_budget)
+        throw std::runtime_error("the importer kept re-reading the file without progress; the file is probably damaged");
+}
+
 size_t QtAssimpIOStream::Read(void* buffer, size_t size, size_t count)
 {
+    countOperation();
     if (size == 0 || count == 0)
         return 0;
     // Assimp, like fread, counts whole elements; a partial trailing element is not one.
@@ -36,6 +51,7 @@ size_t QtAssimpIOStream::Write(const void* buffer, size_t size, size_t count)
 
 aiReturn QtAssimpIOStream::Seek(size_t offset, aiOrigin origin)
 {
+    countOperation();
     qint64 target = 0;
     switch (origin) {
     case aiOrigin_SET:

@@ -4,6 +4,8 @@
 
 #include <QFile>
 
+#include <cstdint>
+
 namespace vct::doc {
 
 /** An Assimp stream over a QFile, so Assimp can read Qt resources (":/...") as well as plain files. */
@@ -24,7 +26,12 @@ public:
     void Flush() override;
 
 private:
+    /** Throws std::runtime_error once reads and seeks exceed any plausible parse of this file. */
+    void countOperation();
+    static constexpr std::uint64_t kOperationBudget = 4096;
     QFile m_file;
+    std::uint64_t m_operations = 0;
+    std::uint64_t m_budget = 0;
 };
 
 } // namespace vct::doc
