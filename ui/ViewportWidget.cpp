@@ -102,7 +102,7 @@ void ViewportWidget::paintGL()
     try {
         m_sync->apply(*m_renderer);
         const QRect trace = traceRect();
-        const float scale = m_interactive ? m_interactiveScale : 1.0f;
+        const float scale = m_interactive ? kInteractiveScale : 1.0f;
         const int w = std::max(1, int(std::lround(trace.width() * scale)));
         const int h = std::max(1, int(std::lround(trace.height() * scale)));
         const render::FrameStats stats = m_renderer->renderFrame(m_document->state().camera, w, h);

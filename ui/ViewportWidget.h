@@ -41,8 +41,6 @@ public:
 
     void setInspector(const InspectorSettings& settings);
     const InspectorSettings& inspector() const { return m_inspector; }
-    /** Share of the full resolution used while the view moves (0.1..1). */
-    void setInteractiveScale(float scale) { m_interactiveScale = scale; }
     /** Renders the current view at full resolution now and returns its linear radiance (export, tests). */
     render::RadianceImage renderFullFrame(int width, int height);
     /** Cubes drawn in the last frame by the inspector. */
@@ -91,7 +89,7 @@ private:
     std::unique_ptr<render::Renderer> m_renderer;
     std::unique_ptr<sync::SceneSync> m_sync;
     InspectorSettings m_inspector;
-    float m_interactiveScale = 0.35f;
+    static constexpr float kInteractiveScale = 0.35f; ///< share of the resolution while the view moves
     bool m_interactive = false;
     QTimer m_refineTimer;
     QTimer m_flyTimer;

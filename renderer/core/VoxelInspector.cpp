@@ -85,9 +85,4 @@ std::size_t VoxelInspector::draw(const ShaderLibrary& shaders, const glm::mat4& 
     return m_listing.samples.size();
 }
 
-void VoxelInspector::release()
-{
-    *this = VoxelInspector();
-}
-
 } // namespace vct::render

@@ -22,7 +22,6 @@ public:
     const VoxelListing& list(const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel);
     /** Draws the current list with the given view; returns how many cubes were drawn. */
     std::size_t draw(const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure);
-    void release();
 
 private:
     gl::Program m_compact;

@@ -118,12 +118,6 @@ void Texture::bindImage(GLuint unit, int level, GLenum access, GLenum format) co
     glBindImageTexture(unit, id(), level, layered ? GL_TRUE : GL_FALSE, 0, access, format ? format : m_format);
 }
 
-void Texture::clear()
-{
-    for (int level = 0; level < m_levels; ++level)
-        glClearTexImage(id(), level, GL_RGBA, GL_FLOAT, nullptr);
-}
-
 std::size_t Texture::byteSize() const
 {
     std::size_t total = 0;

@@ -34,8 +34,6 @@ public:
     void bindUnit(GLuint unit) const;
     /** Binds one mip level as an image (all layers of a 3D or array texture). */
     void bindImage(GLuint unit, int level, GLenum access, GLenum format = 0) const;
-    /** Fills every level with zero. */
-    void clear();
     /** Bytes of texel storage over all levels, from the internal format's size. */
     std::size_t byteSize() const;
 

@@ -16,7 +16,6 @@ public:
     static TimerQuery create();
     void begin();
     void end();
-    bool hasResult() const { return m_issued; }
     /** Blocks until the GPU has the result; milliseconds. */
     double elapsedMs() const;
 
