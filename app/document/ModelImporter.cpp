@@ -1,6 +1,7 @@
 #include "ModelImporter.h"
 
 #include "GltfEmissiveStrength.h"
+#include "ModelPreflight.h"
 #include "QtAssimpIOSystem.h"
 
 #include <assimp/Importer.hpp>
@@ -19,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace vct::doc {
@@ -38,6 +41,7 @@ struct ImportState {
     bool gltf = false;
     std::vector<GltfEmissiveStrength::Entry> emissiveStrengths;
     render::Scene* scene = nullptr;
+    const QtAssimpIOSystem* files = nullptr; // Decides which referenced files may be read.
     ImportReport report;
     std::vector<int> materialMap; // Assimp material index -> scene material index, -1 until first used.
     QHash<QString, int> textureMap; // texture reference -> scene texture index (-1 if it failed to load).
@@ -136,8 +140,11 @@ int loadTexture(ImportState& state, const aiString& reference)
         file.replace(QLatin1Char('\\'), QLatin1Char('/'));
         if (QFileInfo(file).isRelative())
             file = state.modelDir.filePath(file);
-        const QImage image(file);
-        if (image.isNull())
+        const QString refusal = state.files->refusalReason(file);
+        const QImage image = refusal.isEmpty() ? QImage(file) : QImage();
+        if (!refusal.isEmpty())
+            state.report.warnings << QStringLiteral("%1: texture %2 was not read: %3").arg(state.path, file, refusal);
+        else if (image.isNull())
             state.report.warnings
                 << QStringLiteral("%1: texture %2 is missing or unreadable").arg(state.path, file);
         else
@@ -378,14 +385,21 @@ bool ModelImporter::importModel(
     if (!info.isFile())
         return fail(error, QStringLiteral("%1: not a file").arg(path));
 
+    if (const QString problem = ModelPreflight::check(path); !problem.isEmpty())
+        return fail(error, QStringLiteral("%1: cannot import model: %2").arg(path, problem));
+
+    QStringList refusals;
     Assimp::Importer importer;
-    importer.SetIOHandler(new QtAssimpIOSystem); // The importer owns and deletes it.
+    auto* files = new QtAssimpIOSystem(path, &refusals);
+    importer.SetIOHandler(files); // The importer owns and deletes it.
     const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals
         | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure
         | aiProcess_FlipUVs;
     const aiScene* ai = importer.ReadFile(path.toUtf8().constData(), flags);
     if (!ai || !ai->mRootNode) {
-        const QString reason = QString::fromUtf8(importer.GetErrorString());
+        QString reason = QString::fromUtf8(importer.GetErrorString());
+        if (!refusals.isEmpty())
+            reason += QStringLiteral(" (") + refusals.join(QStringLiteral("; ")) + QLatin1Char(')');
         return fail(error,
             QStringLiteral("%1: cannot import model: %2")
                 .arg(path, reason.isEmpty() ? QStringLiteral("unknown error") : reason));
@@ -403,6 +417,9 @@ bool ModelImporter::importModel(
             state.report.warnings << warning;
     }
     state.scene = &scene;
+    state.files = files;
+    for (const QString& refusal : refusals)
+        state.report.warnings << QStringLiteral("%1: %2").arg(path, refusal);
     state.materialMap.assign(ai->mNumMaterials, -1);
 
     const size_t meshesBefore = scene.meshes.size();
@@ -434,3 +451,19 @@ bool ModelImporter::importModel(
 }
 
 } // namespace vct::doc
+
+// Debian builds Assimp 5.2 with its internal assertions on (ASSIMP_BUILD_DEBUG), and the default handler
+// calls abort(): a model whose data contradicts its header (found by fuzzing: a PLY whose vertex count
+// disagrees with its faces trips an assertion in the triangulation step) would take the whole editor down
+// with the user's unsaved work. libassimp calls Assimp::aiAssertViolation through its exported symbol, so
+// this definition in our program replaces the library's; it throws instead, Importer::ReadFile catches it,
+// and the import fails with the assertion as its message.
+namespace Assimp {
+
+void aiAssertViolation(const char* failedExpression, const char* file, int line)
+{
+    throw std::runtime_error(std::string("the model's data is inconsistent (Assimp check failed: ") + failedExpression
+        + " in " + file + ":" + std::to_string(line) + ")");
+}
+
+} // namespace Assimp

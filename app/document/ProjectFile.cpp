@@ -166,9 +166,12 @@ bool readSources(ProjectReader& r, const QJsonObject& root, const QString& proje
             return r.fail(path + QStringLiteral(".spec"), QStringLiteral("is empty"));
         if (isModelPath(spec)) {
             spec = QDir::cleanPath(dir.absoluteFilePath(spec));
-            if (!QFileInfo(spec).isFile())
+            // A hostile project may name a device or FIFO ("/dev/zero" reads forever): only regular files.
+            const QFileInfo model(spec);
+            if (!model.isFile())
                 return r.fail(path + QStringLiteral(".spec"),
-                    QStringLiteral("model file '%1' not found").arg(QDir::toNativeSeparators(spec)));
+                    (model.exists() ? QStringLiteral("model '%1' is not a regular file") : QStringLiteral("model file '%1' not found"))
+                        .arg(QDir::toNativeSeparators(spec)));
         }
         out.sources.push_back({spec});
     }

@@ -253,6 +253,12 @@ private slots:
             sources.append(QJsonObject{{"spec", "models/gone_missing.obj"}});
             o.insert("sources", sources);
         }) << QStringLiteral("gone_missing.obj");
+        // A hostile project naming a device outside the project folder: reading it would never end.
+        QTest::newRow("model is a device") << edited([](QJsonObject& o) {
+            QJsonArray sources = o.value("sources").toArray();
+            sources.append(QJsonObject{{"spec", "/dev/zero"}});
+            o.insert("sources", sources);
+        }) << QStringLiteral("'/dev/zero' is not a regular file");
         QByteArray badUtf8 = valid;
         badUtf8.replace("Tall box", "Tall \xff\xfe box");
         QTest::newRow("invalid UTF-8") << badUtf8 << QStringLiteral("UTF-8");
