@@ -172,6 +172,11 @@ void MainWindow::buildMenus()
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
+    QAction* nonFinite = m_viewMenu->addAction(tr("Check for &NaN/Inf"));
+    nonFinite->setObjectName(QStringLiteral("nonFiniteCheckAction"));
+    nonFinite->setCheckable(true);
+    nonFinite->setToolTip(tr("Counts non-finite texels in every render target and voxel level after each frame"));
+    connect(nonFinite, &QAction::toggled, m_viewport, &ViewportWidget::setNonFiniteCheck);
 }
 
 void MainWindow::openInitial(const QString& specOrProject)

@@ -1,6 +1,7 @@
 #include "ViewportWidget.h"
 
 #include "CameraController.h"
+#include "NonFiniteOverlay.h"
 
 #include "core/Renderer.h"
 #include "document/Document.h"
@@ -36,6 +37,7 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
     : QOpenGLWidget(parent)
     , m_document(document)
     , m_sync(std::make_unique<sync::SceneSync>(document))
+    , m_nonFiniteOverlay(new NonFiniteOverlay(this))
 {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
@@ -116,6 +118,12 @@ void ViewportWidget::paintGL()
                 defaultFramebufferObject(), right.x(), right.y(), right.width(), right.height(), exposure);
             emit cubesDrawn(int(m_lastCubeCount), m_levelCount);
         }
+        if (m_nonFiniteCheck) {
+            // A readback, so only while asked for; the label changes after this paint, not inside it.
+            QMetaObject::invokeMethod(m_nonFiniteOverlay,
+                [overlay = m_nonFiniteOverlay, counts = m_renderer->countNonFinite()] { overlay->showCounts(counts); },
+                Qt::QueuedConnection);
+        }
         emit frameRendered(stats);
     } catch (const std::exception& e) {
         m_error = QString::fromUtf8(e.what());
@@ -148,6 +156,14 @@ std::size_t ViewportWidget::occupiedVoxelCount()
     for (std::size_t i = 3; i < albedo.size(); i += 4)
         count += albedo[i] > 0.0f ? 1 : 0;
     return count;
+}
+
+void ViewportWidget::setNonFiniteCheck(bool enabled)
+{
+    m_nonFiniteCheck = enabled;
+    if (!enabled)
+        m_nonFiniteOverlay->hide();
+    update();
 }
 
 void ViewportWidget::setInspector(const InspectorSettings& settings)

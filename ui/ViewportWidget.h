@@ -25,6 +25,8 @@ class SceneSync;
 
 namespace vct::ui {
 
+class NonFiniteOverlay;
+
 /**
  * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (orbit with the left button,
  * pan with the middle button or Shift, wheel zoom, WASD/QE fly, F frames the selection), picks nodes with a
@@ -53,6 +55,10 @@ public:
     /** How many times a GL context was set up for this widget (it is recreated when the window changes). */
     int contextGeneration() const { return m_contextGeneration; }
     bool isInteractive() const { return m_interactive; }
+    /** The NaN/Inf overlay: while on, each frame ends with a count of non-finite texels in every target. */
+    void setNonFiniteCheck(bool enabled);
+    bool nonFiniteCheck() const { return m_nonFiniteCheck; }
+    const NonFiniteOverlay* nonFiniteOverlay() const { return m_nonFiniteOverlay; }
 
 public slots:
     void frameSelected();
@@ -103,6 +109,8 @@ private:
     int m_levelCount = 0;
     QString m_error;
     int m_contextGeneration = 0;
+    bool m_nonFiniteCheck = false;
+    NonFiniteOverlay* m_nonFiniteOverlay;
 };
 
 } // namespace vct::ui

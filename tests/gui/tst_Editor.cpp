@@ -2,6 +2,7 @@
 
 #include "ui/MainWindow.h"
 #include "ui/MaterialDock.h"
+#include "ui/NonFiniteOverlay.h"
 #include "ui/RenderSettingsDock.h"
 #include "ui/ViewportWidget.h"
 #include "ui/VoxelInspectorDock.h"
@@ -57,6 +58,7 @@ private slots:
     void inspectorScreenshot();
     void saveCloseOpenGivesTheSameDocument();
     void badFilesLeaveTheDocumentAlone();
+    void nonFiniteOverlayReportsEveryTarget();
 
 private:
     bool waitForFrame();
@@ -317,4 +319,25 @@ void EditorTest::badFilesLeaveTheDocumentAlone()
 }
 
 QTEST_MAIN(EditorTest)
+// View > Check for NaN/Inf runs the renderer's reduction after each frame and shows the result over the
+// image; the default scene is finite, so the overlay must say so for every checked target.
+void EditorTest::nonFiniteOverlayReportsEveryTarget()
+{
+    QAction* action = m_window->findChild<QAction*>(QStringLiteral("nonFiniteCheckAction"));
+    QVERIFY(action);
+    QVERIFY(action->isCheckable());
+    const ui::NonFiniteOverlay* overlay = m_window->viewport()->nonFiniteOverlay();
+    QVERIFY(!overlay->isVisible());
+    action->setChecked(true);
+    QVERIFY(m_window->viewport()->nonFiniteCheck());
+    QVERIFY(waitForFrame());
+    QTRY_VERIFY(overlay->isVisible());
+    // Every 2D target plus at least one voxel level per volume.
+    QVERIFY2(overlay->checkedResources() >= 5 + m_window->viewport()->voxelLevelCount(), qPrintable(overlay->text()));
+    QCOMPARE(overlay->total(), std::uint64_t(0));
+    QVERIFY2(overlay->text().contains(QStringLiteral("none in")), qPrintable(overlay->text()));
+    action->setChecked(false);
+    QVERIFY(!overlay->isVisible());
+}
+
 #include "tst_Editor.moc"
