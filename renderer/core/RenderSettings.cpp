@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -98,6 +99,7 @@ const std::map<std::string, Field>& fields()
         t["emission"] = makeField(&RenderSettings::emission, "emissive materials (on/off)");
         t["shadow_map"] = makeField(&RenderSettings::shadowMapSize, "shadow map texels per side (64..8192)");
         t["exposure"] = makeField(&RenderSettings::exposure, "exposure multiplier for 8-bit output (>0)");
+        t["voxel_budget_mb"] = makeField(&RenderSettings::voxelBudgetMiB, "most MiB the voxel textures may take (64..1048576)");
         Field view;
         view.meaning = "final|direct|indirect_diffuse|indirect_specular|ao|albedo|normal|emission";
         view.parse = [](RenderSettings& s, const std::string& v) {
@@ -171,7 +173,38 @@ std::string RenderSettings::validate() const
         return "shadow_map must be 64..8192";
     if (!(exposure > 0.0f))
         return "exposure must be greater than 0";
+    if (voxelBudgetMiB < 64 || voxelBudgetMiB > (1 << 20))
+        return "voxel_budget_mb must be 64..1048576";
+    if (const std::uint64_t bytes = voxelMemoryBytes(); bytes > std::uint64_t(voxelBudgetMiB) << 20) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+            "voxel_res=%d%s needs %.1f GiB of voxel textures, more than voxel_budget_mb=%d allows; "
+            "lower voxel_res or raise voxel_budget_mb if the GL has the memory",
+            voxelResolution, anisotropicMips ? " with anisotropic mips" : "", double(bytes) / double(1u << 30), voxelBudgetMiB);
+        return text;
+    }
     return {};
+}
+
+std::uint64_t RenderSettings::voxelMemoryBytes() const
+{
+    // Mirrors the allocations in VoxelizePass::allocate and MipmapPass::buildDirectional.
+    auto chain = [](std::uint64_t side, std::uint64_t bytesPerTexel, bool mips) {
+        std::uint64_t total = 0;
+        for (std::uint64_t s = side; s >= 1; s /= 2) {
+            total += s * s * s * bytesPerTexel;
+            if (!mips)
+                break;
+        }
+        return total;
+    };
+    const std::uint64_t n = std::uint64_t(voxelResolution);
+    std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 2n x 2n x 3n
+    bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
+    bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
+    if (anisotropicMips && n >= 2)
+        bytes += 6 * chain(n / 2, 8, true);                      // six directional chains from level 1
+    return bytes;
 }
 
 std::vector<std::vector<std::string>> RenderSettings::describe() const

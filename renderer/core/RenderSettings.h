@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,11 +36,20 @@ struct RenderSettings {
     int shadowMapSize = 1024;           ///< Texels per cube face / directional map side.
     float exposure = 1.0f;              ///< Multiplier applied before the filmic curve, 8-bit output only.
     DebugView view = DebugView::Final;
+    /// Voxel textures may take at most this many MiB; validate() refuses a grid that needs more, instead of
+    /// letting the GL fail (or llvmpipe page for minutes). 512^3 needs 12.1 GiB: raise this where the GPU has it.
+    int voxelBudgetMiB = 4096;
 
     /** Applies one `key=value`; returns an empty string or a message saying what is wrong. */
     std::string set(const std::string& key, const std::string& value);
     /** Checks ranges together; returns an empty string or the first problem. */
     std::string validate() const;
+    /**
+     * Bytes of every voxel texture the renderer allocates for this grid: accumulation atlas, static and
+     * combined albedo/normal/emission, the radiance mip chain and, with anisotropic mips, six directional
+     * chains. Equals Renderer::voxelBytes() once a frame has been rendered (tested).
+     */
+    std::uint64_t voxelMemoryBytes() const;
     /** (key, current value, meaning) for --help and --stats. */
     std::vector<std::vector<std::string>> describe() const;
     /** True when a change from `other` needs the voxels rebuilt (grid or voxelization mode). */

@@ -68,6 +68,8 @@ private slots:
     void awkwardCameras();
     void settingsAtTheirLimits_data();
     void settingsAtTheirLimits();
+    void gridBeyondTheMemoryBudgetIsRefused();
+    void voxelMemoryEstimateMatchesTheRenderer();
     void whiteFurnace();
     void smallChangesGiveSmallDifferences();
     void finerGridsConverge();
@@ -265,6 +267,34 @@ void HardCasesTest::settingsAtTheirLimits()
 // the cone weights integrate the cosine lobe to one and every cone ends on an emitting wall. That holds with
 // direction-dependent mips; box-filtered mips let wide cones see through the walls at coarse levels and
 // lose most of the bounce, a bias the test measures and reports (docs/STABILITY.md) rather than hides.
+// The other end of the grid range: 512^3 needs 12.1 GiB of voxel textures. The settings say so and refuse it
+// under the default budget instead of letting the GL fail mid-frame; the settings in use stay as they were.
+void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    const std::string problem = settings.set("voxel_res", "512");
+    QVERIFY2(problem.find("voxel_res=512 needs 12.1 GiB") != std::string::npos, problem.c_str());
+    QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
+    QCOMPARE(settings.voxelResolution, 32);
+    // With the budget raised, the same grid is accepted: the limit is memory, not the code.
+    QVERIFY(settings.set("voxel_budget_mb", "16384").empty());
+    QVERIFY(settings.set("voxel_res", "512").empty());
+    QVERIFY(!settings.set("voxel_budget_mb", "4096").empty()); // would strand the grid over budget
+}
+
+void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
+{
+    for (const bool anisotropic : {false, true})
+        for (const int resolution : {8, 32}) {
+            render::RenderSettings settings;
+            settings.voxelResolution = resolution;
+            settings.anisotropicMips = anisotropic;
+            render(room(), settings, 16);
+            QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
+        }
+}
+
 void HardCasesTest::whiteFurnace()
 {
     const float rho = 0.5f, emission = 1.0f;
