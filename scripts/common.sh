@@ -11,7 +11,7 @@ VCT_PACKAGES=(
     qt6-base-dev libqt6opengl6-dev
     libglm-dev libassimp-dev libopenexr-dev
     libosmesa6-dev libegl-dev libgl1-mesa-dri libegl-mesa0
-    xvfb xauth python3-glad
+    xvfb xauth python3-glad libembree-dev
 )
 
 # Install whichever of VCT_PACKAGES are missing (needs root or sudo).

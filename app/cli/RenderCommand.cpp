@@ -8,6 +8,8 @@
 #include "cli/StatsJson.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
+#include "imageio/ImageMetrics.h"
+#include "reference/ReferenceRenderer.h"
 
 #include <QCommandLineParser>
 #include <QJsonArray>
@@ -15,7 +17,12 @@
 #include <QJsonDocument>
 #include <QSaveFile>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
+
+#include <unistd.h>
 
 namespace vct::cli {
 
@@ -36,6 +43,93 @@ QString settingsHelp()
     return text;
 }
 
+/** What --reference renders with, from --spp, --max-bounces, --seed and --threads. */
+struct ReferenceRequest {
+    int samplesPerPixel = 256;
+    render::ReferenceSettings settings;
+};
+
+/**
+ * The ground truth instead of the GL frame: the CPU path tracer, no GL context. Writes the same image formats
+ * and, with --stats, what the run cost. Returns the process exit code.
+ */
+int renderReference(const ReferenceRequest& request, const render::Scene& scene, const render::Camera& camera,
+    int width, int height, const QString& outPath, float exposure, const QString& statsPath, bool checkFinite)
+{
+    render::RadianceImage image;
+    render::ReferenceStats stats;
+    try {
+        render::ReferenceRenderer renderer(scene, camera, width, height, request.settings);
+        // A terminal gets one line redrawn in place; a log gets a line per 10%.
+        const bool terminal = isatty(fileno(stderr)) != 0;
+        const int step = terminal ? 1 : 10;
+        int lastPercent = -1;
+        const bool done = renderer.render(request.samplesPerPixel, [&](double fraction) {
+            const int percent = int(fraction * 100.0) / step * step;
+            if (percent == lastPercent)
+                return;
+            lastPercent = percent;
+            std::fprintf(stderr, terminal ? "\rvct-render: reference %3d%%" : "vct-render: reference %3d%%\n", percent);
+            std::fflush(stderr);
+        });
+        if (terminal)
+            std::fprintf(stderr, "\n");
+        if (!done)
+            return fail(3, QStringLiteral("the reference render stopped before it finished"));
+        image = renderer.image();
+        stats = renderer.stats();
+    } catch (const std::exception& e) {
+        return fail(3, QString::fromUtf8(e.what()));
+    }
+    std::uint64_t nonFinite = 0;
+    if (checkFinite) {
+        nonFinite = io::ImageMetrics::nonFiniteCount(image);
+        std::printf("check-finite: %llu non-finite channel values in the image (%llu non-finite paths dropped)\n",
+            static_cast<unsigned long long>(nonFinite), static_cast<unsigned long long>(stats.nonFiniteSamples));
+    }
+    std::string writeError;
+    if (!io::ImageFile::write(outPath.toStdString(), image, exposure, &writeError))
+        return fail(3, QString::fromStdString(writeError));
+    const double seconds = std::max(stats.seconds, std::numeric_limits<double>::min());
+    std::printf("wrote %s (%dx%d) with the reference path tracer: %d spp, max %d bounces, seed %llu, %d threads\n",
+        qPrintable(outPath), width, height, request.samplesPerPixel, request.settings.maxBounces,
+        static_cast<unsigned long long>(request.settings.seed), request.settings.threads);
+    std::printf("  %.2f s, %.3f M samples/s, %.2f M rays/s (%.2f rays per sample)\n", stats.seconds,
+        double(stats.samples) / seconds * 1e-6, double(stats.rays) / seconds * 1e-6,
+        double(stats.rays) / double(std::max<std::uint64_t>(stats.samples, 1)));
+    if (!statsPath.isEmpty()) {
+        QJsonObject json;
+        json["renderer"] = QStringLiteral("reference");
+        json["width"] = width;
+        json["height"] = height;
+        json["spp"] = request.samplesPerPixel;
+        json["max_bounces"] = request.settings.maxBounces;
+        json["seed"] = QString::number(request.settings.seed);
+        json["threads"] = request.settings.threads;
+        json["seconds"] = stats.seconds;
+        json["samples"] = double(stats.samples);
+        json["rays"] = double(stats.rays);
+        json["non_finite_samples"] = double(stats.nonFiniteSamples);
+        QSaveFile file(statsPath);
+        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0 || !file.commit())
+            return fail(3, QStringLiteral("cannot write stats to '%1': %2").arg(statsPath, file.errorString()));
+    }
+    return nonFinite ? 4 : 0;
+}
+
+/** Reads an integer option in [lo, hi] into @p target; returns an error message or an empty string. */
+QString readIntOption(const QCommandLineParser& parser, const QCommandLineOption& option, long long lo,
+    long long hi, long long& target)
+{
+    if (!parser.isSet(option))
+        return {};
+    bool ok = false;
+    target = parser.value(option).toLongLong(&ok);
+    if (!ok || target < lo || target > hi)
+        return QStringLiteral("--%1 must be %2..%3").arg(option.names().front()).arg(lo).arg(hi);
+    return {};
+}
+
 } // namespace
 
 int RenderCommand::run(int argc, char** argv)
@@ -44,7 +138,7 @@ int RenderCommand::run(int argc, char** argv)
     QCoreApplication::setApplicationName(QStringLiteral("vct-render"));
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "Renders a scene with voxel cone tracing, headless.\n"
+        "Renders a scene with voxel cone tracing, headless; with --reference, with the CPU path tracer instead.\n"
         "SCENE is a project (.vctproj), builtin:NAME (cornell, cornell_point, atrium, bunny, default) or a model\nfile Assimp reads "
         "(OBJ+MTL, glTF/GLB, PLY, FBX, ...); NAME.lights.json and NAME.camera.json beside a model are read too.\n"
         "Units: point lights W/sr, directional lights W/m^2, emission and output radiance W/(m^2 sr).\n"
@@ -64,8 +158,16 @@ int RenderCommand::run(int argc, char** argv)
     const QCommandLineOption checkFiniteOption(QStringLiteral("check-finite"),
         QStringLiteral("Count NaN/Inf texels in every float render target and voxel level; exit 4 if any."));
     const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    const QCommandLineOption referenceOption(QStringLiteral("reference"),
+        QStringLiteral("Render the ground truth with the CPU path tracer (Embree) instead of the GL renderer; no GL context is needed."));
+    const QCommandLineOption sppOption(QStringLiteral("spp"), QStringLiteral("--reference: samples per pixel (default 256)."), QStringLiteral("N"));
+    const QCommandLineOption maxBouncesOption(QStringLiteral("max-bounces"),
+        QStringLiteral("--reference: longest path in reflections, 0 = emitters only, 1 = direct light (default 64)."), QStringLiteral("K"));
+    const QCommandLineOption seedOption(QStringLiteral("seed"), QStringLiteral("--reference: random seed (default 0); same seed, same image."), QStringLiteral("S"));
+    const QCommandLineOption threadsOption(QStringLiteral("threads"), QStringLiteral("--reference: worker threads (default: all cores)."), QStringLiteral("T"));
     parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
-        statsOption, framesOption, checkFiniteOption, glOption});
+        statsOption, framesOption, checkFiniteOption, glOption, referenceOption, sppOption, maxBouncesOption,
+        seedOption, threadsOption});
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -120,6 +222,32 @@ int RenderCommand::run(int argc, char** argv)
     const QString outPath = parser.value(outOption);
     if (io::ImageFile::formatFor(outPath.toStdString()) == io::ImageFile::Format::Unknown)
         return fail(1, QStringLiteral("cannot tell the image format of '%1' (use .png, .pfm or .exr)").arg(outPath));
+
+    if (parser.isSet(referenceOption)) {
+        ReferenceRequest request;
+        long long spp = request.samplesPerPixel, maxBounces = request.settings.maxBounces,
+                  threads = std::max(1, request.settings.threads), seed = 0;
+        for (const QString& problem : {readIntOption(parser, sppOption, 1, 1 << 20, spp),
+                 readIntOption(parser, maxBouncesOption, 0, 100000, maxBounces),
+                 readIntOption(parser, threadsOption, 1, 1024, threads),
+                 readIntOption(parser, seedOption, 0, std::numeric_limits<long long>::max(), seed)})
+            if (!problem.isEmpty())
+                return fail(1, problem);
+        request.samplesPerPixel = int(spp);
+        request.settings.maxBounces = int(maxBounces);
+        request.settings.threads = int(threads);
+        request.settings.seed = std::uint64_t(seed);
+        for (const QCommandLineOption* glOnly : {&framesOption, &glOption, &voxelOption})
+            if (parser.isSet(*glOnly))
+                std::fprintf(stderr, "vct-render: warning: --%s is ignored with --reference\n",
+                    qPrintable(glOnly->names().front()));
+        return renderReference(request, scene, camera, width, height, outPath, settings.exposure,
+            parser.isSet(statsOption) ? parser.value(statsOption) : QString(), parser.isSet(checkFiniteOption));
+    }
+    for (const QCommandLineOption* referenceOnly :
+        {&sppOption, &maxBouncesOption, &seedOption, &threadsOption})
+        if (parser.isSet(*referenceOnly))
+            return fail(1, QStringLiteral("--%1 needs --reference").arg(referenceOnly->names().front()));
 
     std::string contextError;
     auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);

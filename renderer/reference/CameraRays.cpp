@@ -1,0 +1,40 @@
+#include "reference/CameraRays.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vct::render {
+
+CameraRays::CameraRays(const Camera& camera, int width, int height, const Aabb& sceneBounds)
+    : m_position(camera.position)
+    , m_width(float(std::max(1, width)))
+    , m_height(float(std::max(1, height)))
+{
+    // The same basis glm::lookAt builds (right-handed, the camera looks down its -z).
+    m_forward = glm::normalize(camera.lookAt - camera.position);
+    const glm::vec3 side = glm::normalize(glm::cross(m_forward, camera.up));
+    const glm::vec3 up = glm::cross(side, m_forward);
+    const float tanHalfFov = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    m_right = side * (tanHalfFov * m_width / m_height);
+    m_up = up * tanHalfFov;
+    // Renderer.cpp's cameraMatrices(): the near plane follows the far plane, which follows the scene.
+    const float sceneRadius = std::max(0.5f * glm::length(sceneBounds.size()), 1e-3f);
+    const float farPlane = glm::length(camera.position - sceneBounds.center()) + 2.0f * sceneRadius;
+    m_nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
+}
+
+CameraRays::Ray CameraRays::ray(int x, int y, const glm::vec2& offset) const
+{
+    const float ndcX = 2.0f * (float(x) + offset.x) / m_width - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (float(y) + offset.y) / m_height;
+    const glm::vec3 throughImagePlane = m_forward + ndcX * m_right + ndcY * m_up; // at unit view depth
+    Ray result;
+    result.direction = glm::normalize(throughImagePlane);
+    result.origin = m_position + m_nearPlane * throughImagePlane;
+    return result;
+}
+
+} // namespace vct::render

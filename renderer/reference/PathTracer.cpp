@@ -1,0 +1,191 @@
+#include "reference/PathTracer.h"
+
+#include "reference/PhongBsdf.h"
+#include "reference/RayOffset.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vct::render {
+
+namespace {
+
+/** Veach's power heuristic (beta = 2) for one sample of each of two strategies. */
+float powerHeuristic(float pdf, float otherPdf)
+{
+    const float a = pdf * pdf, b = otherPdf * otherPdf;
+    if (!std::isfinite(a))
+        return 1.0f;
+    return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
+float maxComponent(const glm::vec3& v)
+{
+    return std::max({ v.x, v.y, v.z });
+}
+
+/** Shadow rays stop this fraction short of their target, so they never reach the surface they aim at. */
+constexpr float kShadowRayShortening = 1.0f - 1e-5f;
+
+} // namespace
+
+PathTracer::PathTracer(const Scene& scene, const ReferenceSettings& settings)
+    : m_geometry(scene)
+    , m_emitters(m_geometry.triangles(), m_geometry.materials())
+    , m_pointLights(scene.pointLights)
+    , m_maxBounces(std::max(0, settings.maxBounces))
+    , m_rouletteStartBounce(std::max(1, settings.rouletteStartBounce))
+{
+    m_textures.reserve(scene.textures.size());
+    for (const TextureImage& image : scene.textures)
+        m_textures.emplace_back(image);
+    for (DirectionalLight light : scene.directionalLights) {
+        light.direction = glm::normalize(light.direction);
+        if (std::isfinite(light.direction.x) && std::isfinite(light.direction.y)
+            && std::isfinite(light.direction.z))
+            m_directionalLights.push_back(light); // a zero direction points nowhere: no light
+    }
+}
+
+glm::vec3 PathTracer::albedoAt(
+    const Material& material, const SceneTriangle& triangle, float u, float v) const
+{
+    if (material.albedoTexture < 0 || std::size_t(material.albedoTexture) >= m_textures.size())
+        return material.albedo;
+    return material.albedo
+        * m_textures[std::size_t(material.albedoTexture)].sample(
+            SceneTriangle::interpolate(triangle.uvs, u, v));
+}
+
+glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::uint64_t& rayCount) const
+{
+    const std::vector<SceneTriangle>& triangles = m_geometry.triangles();
+    const std::vector<Material>& materials = m_geometry.materials();
+    glm::vec3 result(0.0f);
+    glm::vec3 throughput(1.0f);
+    glm::vec3 origin = ray.origin;
+    glm::vec3 direction = ray.direction;
+    float bsdfPdf = 0.0f; // solid-angle density of the BSDF sample that chose `direction`
+    for (int bounce = 0;; ++bounce) {
+        ++rayCount;
+        const std::optional<EmbreeScene::Hit> hit = m_geometry.intersect(origin, direction);
+        if (!hit)
+            break; // the background is black
+        const SceneTriangle& triangle = triangles[hit->triangle];
+        const Material& material = materials[std::size_t(triangle.material)];
+        const float cosAtHit = -glm::dot(triangle.geometricNormal, direction);
+        const bool frontFace = cosAtHit > 0.0f;
+        if (frontFace && material.isEmissive()) {
+            // A camera ray has no other way to find the emitter; later ones share it with next-event
+            // estimation.
+            float weight = 1.0f;
+            if (bounce > 0) {
+                const float lightPdf
+                    = m_emitters.pdfArea(hit->triangle) * hit->distance * hit->distance / cosAtHit;
+                weight = powerHeuristic(bsdfPdf, lightPdf);
+            }
+            result += throughput * material.emission * weight;
+        }
+        if (bounce >= m_maxBounces)
+            break;
+
+        const glm::vec3 position = SceneTriangle::interpolate(triangle.vertices, hit->u, hit->v);
+        const glm::vec3 toViewer = -direction;
+        const glm::vec3 facingNormal = frontFace ? triangle.geometricNormal : -triangle.geometricNormal;
+        // Shaded from the side the ray arrives on, as the G-buffer pass flips normals of back faces.
+        glm::vec3 shadingNormal
+            = glm::normalize(SceneTriangle::interpolate(triangle.normals, hit->u, hit->v));
+        if (!frontFace)
+            shadingNormal = -shadingNormal;
+        if (!std::isfinite(shadingNormal.x))
+            shadingNormal = facingNormal;
+        const PhongBsdf bsdf(albedoAt(material, triangle, hit->u, hit->v), material.specular,
+            material.shininess, shadingNormal, toViewer);
+        if (!bsdf.reflects())
+            break;
+        origin = offsetRayOrigin(position, facingNormal);
+
+        // Light arriving from behind the geometric surface would have to pass through it.
+        auto lightContribution = [&](const glm::vec3& toLight) {
+            if (glm::dot(toLight, facingNormal) <= 0.0f)
+                return glm::vec3(0.0f);
+            return bsdf.evaluate(toLight) * std::max(glm::dot(shadingNormal, toLight), 0.0f);
+        };
+        for (const PointLight& light : m_pointLights) {
+            const glm::vec3 toLight = light.position - position;
+            const float distanceSquared = glm::dot(toLight, toLight);
+            if (!(distanceSquared > 0.0f))
+                continue;
+            const glm::vec3 toLightUnit = toLight / std::sqrt(distanceSquared);
+            const glm::vec3 reflected = lightContribution(toLightUnit);
+            if (maxComponent(reflected) <= 0.0f)
+                continue;
+            if (light.castsShadows) {
+                ++rayCount;
+                if (m_geometry.occluded(
+                        origin, toLightUnit, glm::length(light.position - origin) * kShadowRayShortening))
+                    continue;
+            }
+            result += throughput * reflected * light.intensity / distanceSquared;
+        }
+        for (const DirectionalLight& light : m_directionalLights) {
+            const glm::vec3 toLight = -light.direction;
+            const glm::vec3 reflected = lightContribution(toLight);
+            if (maxComponent(reflected) <= 0.0f)
+                continue;
+            if (light.castsShadows) {
+                ++rayCount;
+                if (m_geometry.occluded(origin, toLight))
+                    continue;
+            }
+            result += throughput * reflected * light.irradiance;
+        }
+        if (!m_emitters.isEmpty()) {
+            const glm::vec3 u(random.nextFloat(), random.nextFloat(), random.nextFloat());
+            const EmissiveTriangleSampler::Sample sample = m_emitters.sample(u);
+            const SceneTriangle& emitter = triangles[sample.triangle];
+            const glm::vec3 toLight = sample.position - position;
+            const float distanceSquared = glm::dot(toLight, toLight);
+            const glm::vec3 toLightUnit = toLight / std::sqrt(distanceSquared);
+            const float cosAtLight = -glm::dot(emitter.geometricNormal, toLightUnit);
+            const glm::vec3 reflected = cosAtLight > 0.0f ? lightContribution(toLightUnit) : glm::vec3(0.0f);
+            if (maxComponent(reflected) > 0.0f && distanceSquared > 0.0f) {
+                const float lightPdf = sample.pdfArea * distanceSquared / cosAtLight;
+                const glm::vec3 target = offsetRayOrigin(sample.position, emitter.geometricNormal);
+                const glm::vec3 toTarget = target - origin;
+                const float targetDistance = glm::length(toTarget);
+                ++rayCount;
+                if (!m_geometry.occluded(
+                        origin, toTarget / targetDistance, targetDistance * kShadowRayShortening)) {
+                    const float weight = powerHeuristic(lightPdf, bsdf.pdf(toLightUnit));
+                    result += throughput * reflected * materials[std::size_t(emitter.material)].emission
+                        * (weight / lightPdf);
+                }
+            }
+        }
+
+        const float lobeChoice = random.nextFloat();
+        const glm::vec2 u(random.nextFloat(), random.nextFloat());
+        const glm::vec3 next = bsdf.sample(lobeChoice, u);
+        if (glm::dot(next, facingNormal) <= 0.0f)
+            break;
+        bsdfPdf = bsdf.pdf(next);
+        if (!(bsdfPdf > 0.0f))
+            break;
+        throughput *= bsdf.evaluate(next) * (std::max(glm::dot(shadingNormal, next), 0.0f) / bsdfPdf);
+        if (bounce + 1 >= m_rouletteStartBounce) {
+            // Survival in proportion to throughput; dividing by it keeps the estimate unbiased.
+            const float survival = std::min(1.0f, maxComponent(throughput));
+            if (!(survival > 0.0f) || random.nextFloat() >= survival)
+                break;
+            throughput /= survival;
+        }
+        direction = next;
+    }
+    return result;
+}
+
+} // namespace vct::render
