@@ -51,6 +51,39 @@ public:
      */
     static render::RadianceImage downsampleBox(const render::RadianceImage& image, int factor);
 
+    /** Side of the SSIM window at full size (Wang et al. 2004). */
+    static constexpr int kSsimWindow = 11;
+    /** Standard deviation of the SSIM window's Gaussian weights, in pixels. */
+    static constexpr double kSsimSigma = 1.5;
+
+    /**
+     * Mean structural similarity (Wang, Bovik, Sheikh, Simoncelli 2004) of the tone-mapped images, in
+     * [-1, 1], 1 only for identical displays. Both images go through ToneMapper(@p exposure, Filmic) as
+     * for PNG output, to sRGB-encoded display values in [0, 1]; SSIM is computed on their Rec. 709 luma
+     * Y' = 0.2126 R' + 0.7152 G' + 0.0722 B' (weights applied after the transfer function, unrounded).
+     * Window: Gaussian, sigma = kSsimSigma, side ssimWindowSize(); K1 = 0.01, K2 = 0.03, L = 1; the
+     * result is the mean of the SSIM map over the window positions that lie wholly inside the image
+     * (no padding). Symmetric in its arguments. @p exposure is a linear multiplier (> 0, finite).
+     * The tone mapper sends NaN and -inf to black and +inf to white, so the result is always finite:
+     * check nonFiniteCount() first. Costs O(width * height * window).
+     */
+    static double ssim(
+        const render::RadianceImage& image, const render::RadianceImage& reference, float exposure = 1.0f);
+    /**
+     * The SSIM map whose mean ssim() returns, one value per valid window position, written to all three
+     * channels. It is smaller than the input by w - 1 in each direction (w = ssimWindowSize()): map
+     * pixel (x, y) belongs to the window centred on input pixel (x + (w - 1) / 2, y + (w - 1) / 2).
+     * Values may be negative: write it with ToneMapper::Curve::Clamp.
+     */
+    static render::RadianceImage ssimMap(
+        const render::RadianceImage& image, const render::RadianceImage& reference, float exposure = 1.0f);
+    /**
+     * The SSIM window side for an image of this size: kSsimWindow, or for images narrower or shorter
+     * than that the largest odd side that fits (the Gaussian keeps sigma = kSsimSigma, truncated to the
+     * smaller window and renormalised). Throws std::invalid_argument unless both sizes are >= 1.
+     */
+    static int ssimWindowSize(int width, int height);
+
     /**
      * A picture of where the images differ: each pixel's relative error
      * e = sqrt(mean over channels of (a - ref)^2 / (ref^2 + epsilon)) mapped with t = e / fullScale
