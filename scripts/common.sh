@@ -11,13 +11,13 @@ VCT_PACKAGES=(
     qt6-base-dev libqt6opengl6-dev
     libglm-dev libassimp-dev libopenexr-dev
     libosmesa6-dev libegl-dev libgl1-mesa-dri libegl-mesa0
-    xvfb xauth python3-glad libembree-dev
+    xvfb xauth python3-glad libembree-dev qt6-charts-dev
 )
 
-# Install whichever of VCT_PACKAGES are missing (needs root or sudo).
+# Install whichever of VCT_PACKAGES, and of the packages given as arguments, are missing (needs root or sudo).
 ensure_packages() {
     local missing=() pkg status
-    for pkg in "${VCT_PACKAGES[@]}"; do
+    for pkg in "${VCT_PACKAGES[@]}" "$@"; do
         status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
         if [[ "$status" != "install ok installed" ]]; then
             missing+=("$pkg")
