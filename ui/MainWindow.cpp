@@ -1,7 +1,9 @@
 #include "MainWindow.h"
 
+#include "AccuracyChartDock.h"
 #include "LightDock.h"
 #include "MaterialDock.h"
+#include "ReferenceCompareDock.h"
 #include "RenderSettingsDock.h"
 #include "SceneGraphDock.h"
 #include "StatsDock.h"
@@ -31,6 +33,8 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
+
+#include <algorithm>
 
 namespace vct::ui {
 
@@ -97,7 +101,10 @@ void MainWindow::buildDocks()
     m_settingsDock = new RenderSettingsDock(this);
     m_inspectorDock = new VoxelInspectorDock(this);
     m_statsDock = new StatsDock(this);
+    m_compareDock = new ReferenceCompareDock(this);
+    m_accuracyDock = new AccuracyChartDock(this);
     m_sceneDock->setDocument(m_document);
+    m_compareDock->setDocument(m_document);
     m_materialDock->setDocument(m_document);
     m_lightDock->setDocument(m_document);
     m_settingsDock->setDocument(m_document);
@@ -111,6 +118,21 @@ void MainWindow::buildDocks()
     tabifyDockWidget(m_inspectorDock, m_statsDock);
     m_materialDock->raise();
     m_inspectorDock->raise();
+    // The comparison wants width for three images side by side; both start hidden so the default layout stays
+    // uncluttered (the View menu or Ctrl+R shows them).
+    addDockWidget(Qt::BottomDockWidgetArea, m_compareDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_accuracyDock);
+    tabifyDockWidget(m_compareDock, m_accuracyDock);
+    m_compareDock->hide();
+    m_accuracyDock->hide();
+    m_compareDock->setFrameSource(
+        [this] { return double(std::max(1, m_viewport->width())) / double(std::max(1, m_viewport->height())); },
+        [this](int width, int height, double& gpuMs) {
+            render::FrameStats stats;
+            render::RadianceImage image = m_viewport->renderFullFrame(width, height, &stats);
+            gpuMs = image.isEmpty() ? -1.0 : stats.totalGpuMs;
+            return image;
+        });
 
     connect(m_sceneDock, &SceneGraphDock::lightSelected, m_lightDock, &LightDock::setCurrentLight);
     connect(m_inspectorDock, &VoxelInspectorDock::settingsChanged, m_viewport, &ViewportWidget::setInspector);
@@ -168,7 +190,8 @@ void MainWindow::buildMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_materialDock),
              static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
-             static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock)})
+             static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock),
+             static_cast<QDockWidget*>(m_compareDock), static_cast<QDockWidget*>(m_accuracyDock)})
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
@@ -177,6 +200,23 @@ void MainWindow::buildMenus()
     nonFinite->setCheckable(true);
     nonFinite->setToolTip(tr("Counts non-finite texels in every render target and voxel level after each frame"));
     connect(nonFinite, &QAction::toggled, m_viewport, &ViewportWidget::setNonFiniteCheck);
+
+    QMenu* renderMenu = menuBar()->addMenu(tr("&Render"));
+    QAction* compare = renderMenu->addAction(tr("&Compare with reference"));
+    compare->setObjectName(QStringLiteral("compareReferenceAction"));
+    compare->setShortcut(QKeySequence(tr("Ctrl+R")));
+    compare->setToolTip(tr("Path-trace the current view in the background and compare the cone-traced image with it"));
+    connect(compare, &QAction::triggered, this, [this] {
+        m_compareDock->show();
+        m_compareDock->raise();
+        m_compareDock->startComparison();
+    });
+    QAction* chart = renderMenu->addAction(tr("&Accuracy chart"));
+    chart->setObjectName(QStringLiteral("accuracyChartAction"));
+    connect(chart, &QAction::triggered, this, [this] {
+        m_accuracyDock->show();
+        m_accuracyDock->raise();
+    });
 }
 
 void MainWindow::openInitial(const QString& specOrProject)

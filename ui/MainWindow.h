@@ -11,8 +11,10 @@ class Document;
 
 namespace vct::ui {
 
+class AccuracyChartDock;
 class LightDock;
 class MaterialDock;
+class ReferenceCompareDock;
 class RenderSettingsDock;
 class SceneGraphDock;
 class StatsDock;
@@ -41,6 +43,8 @@ public:
     SceneGraphDock* sceneGraphDock() const { return m_sceneDock; }
     LightDock* lightDock() const { return m_lightDock; }
     StatsDock* statsDock() const { return m_statsDock; }
+    ReferenceCompareDock* referenceCompareDock() const { return m_compareDock; }
+    AccuracyChartDock* accuracyChartDock() const { return m_accuracyDock; }
     /** Where autosave writes (beside the settings, per user). */
     static QString recoveryPath();
 
@@ -74,6 +78,8 @@ private:
     RenderSettingsDock* m_settingsDock = nullptr;
     VoxelInspectorDock* m_inspectorDock = nullptr;
     StatsDock* m_statsDock = nullptr;
+    ReferenceCompareDock* m_compareDock = nullptr;
+    AccuracyChartDock* m_accuracyDock = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_recentMenu = nullptr;
     QTimer m_autosaveTimer;

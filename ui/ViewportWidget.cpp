@@ -131,13 +131,15 @@ void ViewportWidget::paintGL()
     }
 }
 
-render::RadianceImage ViewportWidget::renderFullFrame(int width, int height)
+render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, render::FrameStats* stats)
 {
     if (!m_renderer)
         return {};
     makeCurrent();
     m_sync->apply(*m_renderer);
-    m_renderer->renderFrame(m_document->state().camera, width, height);
+    const render::FrameStats frameStats = m_renderer->renderFrame(m_document->state().camera, width, height);
+    if (stats)
+        *stats = frameStats;
     render::RadianceImage image = m_renderer->readFrame();
     doneCurrent();
     update(); // the next paint renders at the widget's own size again

@@ -43,8 +43,11 @@ public:
 
     void setInspector(const InspectorSettings& settings);
     const InspectorSettings& inspector() const { return m_inspector; }
-    /** Renders the current view at full resolution now and returns its linear radiance (export, tests). */
-    render::RadianceImage renderFullFrame(int width, int height);
+    /**
+     * Renders the current view at full resolution now and returns its linear radiance (export, tests, the
+     * reference comparison). @p stats, if given, receives that frame's figures (GPU ms of the passes that ran).
+     */
+    render::RadianceImage renderFullFrame(int width, int height, render::FrameStats* stats = nullptr);
     /** Cubes drawn in the last frame by the inspector. */
     std::size_t lastCubeCount() const { return m_lastCubeCount; }
     /** Mip levels the renderer has (0 before the first frame). */
