@@ -13,6 +13,8 @@
 
 namespace vct::render {
 
+class ConeSampleCounter;
+
 /**
  * Counters that grow when something a pass depends on changes. A pass remembers the values it last ran
  * with, so "can I reuse my output?" is an exact comparison rather than a guess.
@@ -46,6 +48,8 @@ struct FrameContext {
     Camera camera;
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
+    /// Set only while vct-bench perf counts the cone pass's 3D texture fetches (an untimed shader variant).
+    ConeSampleCounter* coneSampleCounter = nullptr;
 };
 
 } // namespace vct::render

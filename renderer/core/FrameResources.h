@@ -26,6 +26,10 @@ struct VoxelVolume {
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
     /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid level k+1).
     std::array<gl::Texture, 6> directional;
+    /// With bounces = 2 (VoxelBouncePass): radiance after a second bounce gathered per voxel, full mip chain,
+    /// and its directional chains when anisotropic. Empty otherwise. Cones sample these when present.
+    gl::Texture bounced;
+    std::array<gl::Texture, 6> bouncedDirectional;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
     VoxelRegion changedRegion;
@@ -36,6 +40,9 @@ struct VoxelVolume {
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
 
     std::size_t byteSize() const;
+    /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance. */
+    const gl::Texture& coneRadiance() const { return bounced ? bounced : radiance; }
+    const std::array<gl::Texture, 6>& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
 };
 
 /** Shadow maps of all lights: point lights as cube layers of linear distance, directional lights as 2D layers. */

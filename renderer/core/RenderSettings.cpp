@@ -85,6 +85,7 @@ const std::map<std::string, Field>& fields()
         t["voxel_res"] = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
         t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
         t["anisotropic"] = makeField(&RenderSettings::anisotropicMips, "direction-dependent mips: six chains composited along each axis (on/off)");
+        t["bounces"] = makeField(&RenderSettings::bounces, "light bounces carried by the voxels: 1, or 2 to gather a second bounce per voxel");
         t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
         t["diffuse_aperture"] = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
         t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
@@ -157,6 +158,8 @@ std::string RenderSettings::validate() const
     const bool powerOfTwo = voxelResolution > 0 && (voxelResolution & (voxelResolution - 1)) == 0;
     if (!powerOfTwo || voxelResolution < 8 || voxelResolution > 512)
         return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
+    if (bounces != 1 && bounces != 2)
+        return "bounces must be 1 or 2, not " + std::to_string(bounces);
     if (diffuseConeCount < 1 || diffuseConeCount > 32)
         return "diffuse_cones must be 1..32, not " + std::to_string(diffuseConeCount);
     if (!(diffuseApertureDeg > 0.0f && diffuseApertureDeg < 180.0f))
@@ -204,6 +207,8 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
     bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
     if (anisotropicMips && n >= 2)
         bytes += 6 * chain(n / 2, 8, true);                      // six directional chains from level 1
+    if (bounces >= 2)                                            // the second-bounce volume and its chains
+        bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 6 * chain(n / 2, 8, true) : 0);
     return bytes;
 }
 

@@ -19,6 +19,10 @@ struct RenderSettings {
     /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
     /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample.
     bool anisotropicMips = false;
+    /// Light bounces the voxels carry: 1 = direct light and emission only (the cones add the one bounce seen
+    /// per pixel); 2 = each surface voxel also gathers a bounce through the diffuse cones (VoxelBouncePass), so
+    /// pixels see two. Closed rooms are otherwise too dark (docs/ACCURACY.md has the measured difference).
+    int bounces = 1;
     int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
     float diffuseApertureDeg = 60.0f;   ///< Full cone angle of each diffuse cone.
     float specularApertureDeg = 15.0f;  ///< Narrowest specular cone; glossier lobes are clamped to it.

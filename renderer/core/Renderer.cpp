@@ -1,5 +1,6 @@
 #include "core/Renderer.h"
 
+#include "core/ConeSampleCounter.h"
 #include "core/ConeSet.h"
 #include "core/FiniteCheck.h"
 #include "core/FrameContext.h"
@@ -12,6 +13,7 @@
 #include "passes/GBufferPass.h"
 #include "passes/InjectLightPass.h"
 #include "passes/MipmapPass.h"
+#include "passes/VoxelBouncePass.h"
 #include "passes/ShadowMapPass.h"
 #include "passes/VoxelizePass.h"
 
@@ -39,6 +41,8 @@ struct Renderer::State {
     gl::Program presentProgram;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
+    std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
+    std::uint64_t coneSamples = 0; ///< counted in the last frame
 };
 
 namespace {
@@ -50,6 +54,7 @@ std::unique_ptr<Pipeline> makePipeline()
     passes.push_back(std::make_unique<VoxelizePass>());
     passes.push_back(std::make_unique<InjectLightPass>());
     passes.push_back(std::make_unique<MipmapPass>());
+    passes.push_back(std::make_unique<VoxelBouncePass>());
     passes.push_back(std::make_unique<GBufferPass>());
     passes.push_back(std::make_unique<ConeTracePass>());
     passes.push_back(std::make_unique<CompositePass>());
@@ -251,12 +256,15 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
-        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f)};
+        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), st.coneSampleCounter.get()};
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     frame.view = matrices.view;
     frame.projection = matrices.projection;
 
+    if (st.coneSampleCounter)
+        st.coneSampleCounter->reset();
     FrameStats stats = st.pipeline->execute(frame);
+    st.coneSamples = st.coneSampleCounter ? st.coneSampleCounter->read() : 0;
     st.staticMaterialEdits = Aabb{};
     stats.voxelBytes = st.voxels.byteSize();
     stats.width = width;
@@ -374,6 +382,21 @@ float Renderer::voxelSize() const { return m_state->voxels.frame.voxelSize(); }
 int Renderer::voxelResolution() const { return m_state->voxels.frame.resolution; }
 glm::vec3 Renderer::gridOrigin() const { return m_state->voxels.frame.origin; }
 std::size_t Renderer::voxelBytes() const { return m_state->voxels.byteSize(); }
+std::vector<VoxelTextureMemory> Renderer::voxelMemory() const { return describeVoxelMemory(m_state->voxels); }
+
+void Renderer::setConeSampleCounting(bool enabled)
+{
+    if (!enabled)
+        m_state->coneSampleCounter.reset();
+    else if (!m_state->coneSampleCounter)
+        m_state->coneSampleCounter = std::make_unique<ConeSampleCounter>();
+    m_state->coneSamples = 0;
+}
+
+std::uint64_t Renderer::coneSampleCount() const
+{
+    return m_state->coneSamples;
+}
 
 std::vector<std::string> Renderer::takeGlErrors()
 {

@@ -4,10 +4,12 @@
 #include "core/FrameStats.h"
 #include "core/RenderSettings.h"
 #include "core/VoxelChannel.h"
+#include "core/VoxelTextureMemory.h"
 #include "gl/GlLoader.h"
 #include "image/RadianceImage.h"
 #include "scene/Scene.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -81,6 +83,15 @@ public:
     int voxelResolution() const;
     glm::vec3 gridOrigin() const;
     std::size_t voxelBytes() const;
+    /** Every 3D texture of the voxel grid with its bytes per mip level (empty before the first frame). */
+    std::vector<VoxelTextureMemory> voxelMemory() const;
+    /**
+     * Benchmarks only: while on, the cone pass runs a variant that counts its 3D texture fetches. It is slower
+     * than the normal pass, so do not time frames drawn with it.
+     */
+    void setConeSampleCounting(bool enabled);
+    /** Fetches the cone pass made in the last frame while counting was on; 0 otherwise or if it did not run. */
+    std::uint64_t coneSampleCount() const;
     /** GL errors and KHR_debug messages since the last call. */
     std::vector<std::string> takeGlErrors();
 

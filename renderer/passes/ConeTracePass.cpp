@@ -1,7 +1,9 @@
 #include "passes/ConeTracePass.h"
 
+#include "core/ConeSampleCounter.h"
 #include "core/FrameContext.h"
 #include "core/FrameRules.h"
+#include "passes/ConeTracingSetup.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -32,43 +34,34 @@ void ConeTracePass::execute(FrameContext& frame)
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
     const bool anisotropic = settings.anisotropicMips && v.directional[0];
-    gl::Program& program = anisotropic ? m_anisotropicProgram : m_program;
-    if (!program)
-        program = frame.shaders.build({anisotropic ? "cone trace (anisotropic)" : "cone trace",
-            {"common/FullScreen.vert", "cone/ConeTrace.frag"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
+    const bool counting = frame.coneSampleCounter != nullptr;
+    gl::Program& program = counting ? m_countingPrograms[anisotropic ? 1 : 0] : anisotropic ? m_anisotropicProgram : m_program;
+    if (!program) {
+        std::vector<std::string> defines;
+        if (anisotropic)
+            defines.push_back("ANISOTROPIC");
+        if (counting)
+            defines.push_back("COUNT_SAMPLES");
+        program = frame.shaders.build({std::string(anisotropic ? "cone trace (anisotropic)" : "cone trace")
+                + (counting ? ", counting samples" : ""),
+            {"common/FullScreen.vert", "cone/ConeTrace.frag"}, defines});
+    }
+    if (counting)
+        frame.coneSampleCounter->bind();
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
-    const float voxel = v.frame.voxelSize();
-    const float maxDistance = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
-    std::vector<glm::vec4> cones;
-    for (int i = 0; i < frame.diffuseCones.size(); ++i)
-        cones.emplace_back(frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
-
-    program.set("uGridOrigin", v.frame.origin);
-    program.set("uGridExtent", v.frame.extent);
-    program.set("uVoxelSize", voxel);
-    program.set("uMaxLevel", float(v.radiance.levels() - 1));
-    program.set("uStepFactor", settings.stepFactor);
-    program.set("uMaxDistance", maxDistance);
-    program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
-    program.set("uConeCount", frame.diffuseCones.size());
-    program.set("uCones", cones);
-    program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
+    ConeTracingSetup::apply(program, frame, anisotropic, true);
     program.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
     program.set("uDiffuseEnabled", FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
     program.set("uSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
     program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
-    program.set("uAoDistance", 0.1f * v.frame.extent);
+    program.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
     program.set("uCameraPosition", frame.camera.position);
 
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
     s.specular.bindUnit(3);
-    v.radiance.bindUnit(5);
-    if (anisotropic)
-        for (std::size_t d = 0; d < 6; ++d)
-            v.directional[d].bindUnit(GLuint(6 + d));
     program.set("uDivisor", s.indirectDivisor);
     program.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     s.indirectTarget.bind();

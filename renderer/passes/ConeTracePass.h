@@ -21,6 +21,7 @@ public:
 private:
     gl::Program m_program;            ///< box-filtered mips
     gl::Program m_anisotropicProgram; ///< direction-dependent mips
+    gl::Program m_countingPrograms[2]; ///< COUNT_SAMPLES variants for vct-bench perf: [0] box mips, [1] anisotropic
     gl::VertexArray m_emptyVao;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/RenderPass.h"
-#include "gl/Program.h"
+#include "passes/VoxelMipBuilder.h"
 
 #include <cstdint>
 
@@ -17,9 +17,7 @@ public:
     void invalidate() override { m_radianceVersion = 0; }
 
 private:
-    void buildDirectional(FrameContext& frame);
-    gl::Program m_program;
-    gl::Program m_directionalProgram;
+    VoxelMipBuilder m_builder;
     std::uint64_t m_radianceVersion = 0;
     bool m_anisotropic = false;
 };

@@ -28,6 +28,7 @@ private slots:
     void voxelSettingsRebuildEverything();
     void ambientOcclusionOnlyWhenShown();
     void noLightSourcesMeansNoIndirectLight();
+    void secondBounceFollowsTheFirst();
 
 private:
     render::FrameStats planned();
@@ -243,6 +244,47 @@ void RenderPlanTest::noLightSourcesMeansNoIndirectLight()
     for (const glm::vec3& p : m_plannedImage.pixels)
         QCOMPARE(p, glm::vec3(0.0f)); // nothing emits, nothing can be seen
     expectSameAsForced("no light sources");
+}
+
+// bounces = 2 adds a per-voxel gather: it runs when the first-bounce radiance changes, is reused for camera
+// moves, and is skipped (its volume released, cones back on the first bounce) when set back to 1.
+void RenderPlanTest::secondBounceFollowsTheFirst()
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    settings.shadowMapSize = 256;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(m_scene);
+    planned();
+    expectAction("second bounce", "skipped");
+    const std::size_t oneBounceBytes = m_gl.renderer->voxelBytes();
+
+    settings.bounces = 2;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("second bounce", "run");
+    expectAction("inject light", "reused");
+    QVERIFY(m_gl.renderer->voxelBytes() > oneBounceBytes);
+    expectSameAsForced("second bounce on");
+
+    m_camera.position += glm::vec3(0.05f, 0.0f, 0.0f);
+    planned();
+    expectAction("second bounce", "reused");
+    expectSameAsForced("camera move with two bounces");
+
+    m_scene.pointLights[0].position += glm::vec3(0.0f, -0.05f, 0.0f);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    planned();
+    expectAction("inject light", "run");
+    expectAction("second bounce", "run");
+    expectSameAsForced("moved light with two bounces");
+
+    settings.bounces = 1;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("second bounce", "skipped");
+    QCOMPARE(m_gl.renderer->voxelBytes(), oneBounceBytes);
+    expectSameAsForced("second bounce off");
 }
 
 QTEST_GUILESS_MAIN(RenderPlanTest)

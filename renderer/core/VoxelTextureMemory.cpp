@@ -1,0 +1,76 @@
+#include "core/VoxelTextureMemory.h"
+
+#include "core/FrameResources.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace vct::render {
+
+namespace {
+
+std::string formatName(GLenum format)
+{
+    switch (format) {
+    case GL_RGBA16F:
+        return "rgba16f";
+    case GL_RGBA8:
+        return "rgba8";
+    case GL_R32F:
+        return "r32f";
+    case GL_R32UI:
+        return "r32ui";
+    case GL_RGBA32F:
+        return "rgba32f";
+    default: {
+        char hex[32];
+        std::snprintf(hex, sizeof hex, "format 0x%04x", unsigned(format));
+        return hex;
+    }
+    }
+}
+
+VoxelTextureMemory describe(const std::string& name, const gl::Texture& texture)
+{
+    VoxelTextureMemory memory { name, formatName(texture.format()), texture.width(), texture.height(),
+        texture.depth(), {} };
+    // The same halving as gl::Texture::byteSize, kept per level.
+    int w = texture.width(), h = texture.height(), d = texture.depth();
+    for (int level = 0; level < texture.levels(); ++level) {
+        memory.levelBytes.push_back(
+            std::size_t(w) * std::size_t(h) * std::size_t(d) * gl::bytesPerTexel(texture.format()));
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
+        d = std::max(1, d / 2);
+    }
+    return memory;
+}
+
+} // namespace
+
+std::size_t VoxelTextureMemory::totalBytes() const
+{
+    return std::accumulate(levelBytes.begin(), levelBytes.end(), std::size_t(0));
+}
+
+std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
+{
+    std::vector<VoxelTextureMemory> list;
+    const std::pair<const char*, const gl::Texture*> named[] = { { "accumulators", &v.accumulators },
+        { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
+        { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
+        { "emission", &v.emission }, { "radiance", &v.radiance }, { "bounced", &v.bounced } };
+    for (const auto& [name, texture] : named)
+        if (*texture)
+            list.push_back(describe(name, *texture));
+    static const char* const kAxes[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
+    for (const auto& [prefix, chains] :
+        { std::pair("radiance", &v.directional), std::pair("bounced", &v.bouncedDirectional) })
+        for (std::size_t d = 0; d < 6; ++d)
+            if ((*chains)[d])
+                list.push_back(describe(std::string(prefix) + kAxes[d], (*chains)[d]));
+    return list;
+}
+
+} // namespace vct::render

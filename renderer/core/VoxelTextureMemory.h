@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace vct::render {
+
+struct VoxelVolume;
+
+/** Storage of one 3D texture of the voxel grid, mip level by mip level (for benchmarks and the stats panel).
+ */
+struct VoxelTextureMemory {
+    std::string name; ///< "radiance", "accumulators", "radiance+x", ...
+    std::string format; ///< "rgba16f", "rgba8", "r32f"
+    int width = 0, height = 0, depth = 0; ///< texels of level 0
+    std::vector<std::size_t> levelBytes; ///< one entry per mip level, level 0 first
+
+    std::size_t totalBytes() const;
+};
+
+/** Every allocated 3D texture of the volume, in a fixed order; their totals add up to
+ * VoxelVolume::byteSize(). */
+std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& volume);
+
+} // namespace vct::render

@@ -1,0 +1,41 @@
+#include "passes/ConeTracingSetup.h"
+
+#include "core/FrameContext.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace vct::render {
+
+void ConeTracingSetup::apply(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
+{
+    const RenderSettings& settings = frame.settings;
+    const VoxelVolume& v = frame.voxels;
+    const float voxel = v.frame.voxelSize();
+    const float maxDistance = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
+    std::vector<glm::vec4> cones;
+    for (int i = 0; i < frame.diffuseCones.size(); ++i)
+        cones.emplace_back(frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
+
+    program.set("uGridOrigin", v.frame.origin);
+    program.set("uGridExtent", v.frame.extent);
+    program.set("uVoxelSize", voxel);
+    program.set("uMaxLevel", float(v.radiance.levels() - 1));
+    program.set("uStepFactor", settings.stepFactor);
+    program.set("uMaxDistance", maxDistance);
+    program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
+    program.set("uConeCount", frame.diffuseCones.size());
+    program.set("uCones", cones);
+    program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
+
+    (useBounced ? v.coneRadiance() : v.radiance).bindUnit(5);
+    if (anisotropic) {
+        const auto& chains = useBounced ? v.coneDirectional() : v.directional;
+        for (std::size_t d = 0; d < 6; ++d)
+            chains[d].bindUnit(GLuint(6 + d));
+    }
+}
+
+} // namespace vct::render

@@ -1,0 +1,49 @@
+// A second bounce, gathered per voxel: each surface voxel traces the diffuse cones from its own normal
+// through the volume of first-bounce radiance (direct light and emission, filtered into mips) and stores
+//   L = L_direct + albedo * sum_i w_i L_i,
+// since the cone weights split the cosine lobe (sum_i w_i L_i = E / pi, and a Lambertian surface sends
+// albedo / pi * E). Cones traced per pixel through this volume then see light that bounced twice.
+#include "common/ConeMath.glsl"
+
+#define MAX_CONES 32
+#include "common/ConeTracing.glsl"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(binding = 0) uniform sampler3D uAlbedo;
+layout(binding = 1) uniform sampler3D uNormal;
+layout(rgba16f, binding = 0) writeonly uniform image3D uBounced;
+
+uniform int uResolution;
+uniform float uConeOffset; // metres along the normal
+uniform int uConeCount;
+uniform vec4 uCones[MAX_CONES]; // tangent-space axis, w = weight
+uniform float uDiffuseTanHalf;
+
+void main()
+{
+    ivec3 voxel = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(voxel, ivec3(uResolution))))
+        return;
+    vec4 albedo = texelFetch(uAlbedo, voxel, 0);
+    vec4 first = texelFetch(uRadiance, voxel, 0); // premultiplied by opacity
+    vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
+    float normalLength = length(normalSum);
+    // Empty voxels, and voxels whose faces cancel (a two-sided sliver), keep their first-bounce value.
+    if (albedo.a <= 0.0 || normalLength < 0.5 || max(albedo.r, max(albedo.g, albedo.b)) <= 0.0) {
+        imageStore(uBounced, voxel, first);
+        return;
+    }
+    vec3 n = normalSum / normalLength;
+    vec3 origin = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize + n * uConeOffset;
+    vec3 t, b;
+    tangentBasis(n, t, b);
+    vec3 gathered = vec3(0.0);
+    for (int i = 0; i < uConeCount; ++i) {
+        vec3 axis = uCones[i].xyz;
+        vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
+        float unused;
+        gathered += uCones[i].w * traceCone(origin, dir, uDiffuseTanHalf, unused).rgb;
+    }
+    imageStore(uBounced, voxel, vec4(first.rgb + albedo.rgb * gathered * albedo.a, first.a));
+}

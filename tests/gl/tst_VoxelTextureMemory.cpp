@@ -1,0 +1,75 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include <QtTest>
+
+using namespace vct;
+
+/** Renderer::voxelMemory: bytes per 3D texture level, adding up to what FrameStats reports as voxel bytes. */
+class VoxelTextureMemoryTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void levelsHalveAndAddUpToTheTotal_data();
+    void levelsHalveAndAddUpToTheTotal();
+
+private:
+    test::GlTestContext m_gl;
+};
+
+void VoxelTextureMemoryTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+}
+
+void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal_data()
+{
+    QTest::addColumn<bool>("anisotropic");
+    QTest::newRow("box mips") << false;
+    QTest::newRow("anisotropic mips") << true;
+}
+
+void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
+{
+    QFETCH(bool, anisotropic);
+    render::Renderer& renderer = *m_gl.renderer;
+    render::Scene scene;
+    scene.materials.push_back(render::Material {});
+    scene.meshes.push_back(
+        test::makeTriangles(test::quad({ -1, 0, 1 }, { 1, 0, 1 }, { 1, 0, -1 }, { -1, 0, -1 }), 0));
+    scene.pointLights.push_back(render::PointLight { { 0.0f, 1.0f, 0.0f }, glm::vec3(1.0f), true });
+    render::RenderSettings settings;
+    settings.voxelResolution = 16;
+    settings.anisotropicMips = anisotropic;
+    renderer.setSettings(settings);
+    renderer.setScene(scene);
+    const render::FrameStats stats = renderer.renderFrame(scene.camera, 16, 16);
+
+    const std::vector<render::VoxelTextureMemory> memory = renderer.voxelMemory();
+    std::size_t total = 0;
+    bool sawRadiance = false;
+    int directional = 0;
+    for (const render::VoxelTextureMemory& m : memory) {
+        total += m.totalBytes();
+        directional += m.name.rfind("radiance", 0) == 0 && m.name.size() == 10; // "radiance+x" ...
+        if (m.name != "radiance")
+            continue;
+        sawRadiance = true;
+        QCOMPARE(m.format, std::string("rgba16f"));
+        QCOMPARE(m.levelBytes.size(), std::size_t(5)); // 16, 8, 4, 2, 1
+        for (std::size_t level = 0; level < m.levelBytes.size(); ++level) {
+            const std::size_t side = std::size_t(16 >> level);
+            QCOMPARE(m.levelBytes[level], side * side * side * 8);
+        }
+    }
+    QVERIFY(sawRadiance);
+    QCOMPARE(directional, anisotropic ? 6 : 0);
+    QCOMPARE(total, renderer.voxelBytes());
+    QCOMPARE(total, stats.voxelBytes);
+    QVERIFY(renderer.takeGlErrors().empty());
+}
+
+QTEST_GUILESS_MAIN(VoxelTextureMemoryTest)
+#include "tst_VoxelTextureMemory.moc"
