@@ -1,5 +1,6 @@
 #include "cli/BenchCommand.h"
 
+#include "cli/PerfCommand.h"
 #include "cli/PlanBenchmark.h"
 #include "cli/SceneInput.h"
 #include "context/HeadlessContext.h"
@@ -10,6 +11,7 @@
 #include <QSaveFile>
 
 #include <cstdio>
+#include <cstring>
 
 namespace vct::cli {
 
@@ -25,15 +27,20 @@ int fail(int code, const QString& message)
 
 int BenchCommand::run(int argc, char** argv)
 {
+    // perf draws PNG charts, whose text needs a QGuiApplication: it makes its own application object.
+    if (argc > 1 && std::strcmp(argv[1], "perf") == 0)
+        return PerfCommand::run(argc, argv);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vct-bench"));
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Measures the renderer; GPU times come from GL timestamp queries (medians over frames).\n"
         "  plan SCENE   replays edit sequences with the render plan and with every pass forced, and reports\n"
-        "               GPU ms per frame for both (docs/BENCHMARKS.md)."));
+        "               GPU ms per frame for both (docs/BENCHMARKS.md).\n"
+        "  perf SCENE   per-pass cost, voxel memory, cone-pass sampling efficiency and scaling curves (CSV,\n"
+        "               Markdown, SVG/PNG charts); see vct-bench perf --help."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan"));
+    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan or perf"));
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Frame width (default 640)."), QStringLiteral("W"), QStringLiteral("640"));
     const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Frame height (default 360)."), QStringLiteral("H"), QStringLiteral("360"));
