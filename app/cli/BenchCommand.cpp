@@ -1,5 +1,6 @@
 #include "cli/BenchCommand.h"
 
+#include "cli/AccuracyCommand.h"
 #include "cli/PerfCommand.h"
 #include "cli/PlanBenchmark.h"
 #include "cli/SceneInput.h"
@@ -30,6 +31,8 @@ int BenchCommand::run(int argc, char** argv)
     // perf draws PNG charts, whose text needs a QGuiApplication: it makes its own application object.
     if (argc > 1 && std::strcmp(argv[1], "perf") == 0)
         return PerfCommand::run(argc, argv);
+    if (argc > 1 && std::strcmp(argv[1], "accuracy") == 0)
+        return AccuracyCommand::run(argc, argv);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vct-bench"));
     QCommandLineParser parser;
@@ -38,9 +41,11 @@ int BenchCommand::run(int argc, char** argv)
         "  plan SCENE   replays edit sequences with the render plan and with every pass forced, and reports\n"
         "               GPU ms per frame for both (docs/BENCHMARKS.md).\n"
         "  perf SCENE   per-pass cost, voxel memory, cone-pass sampling efficiency and scaling curves (CSV,\n"
-        "               Markdown, SVG/PNG charts); see vct-bench perf --help."));
+        "               Markdown, SVG/PNG charts); see vct-bench perf --help.\n"
+        "  accuracy SCENE  error against a reference and GPU time over a sweep of settings, with the path tracer's\n"
+        "               own curve (CSV, Markdown, SVG/PNG chart); see vct-bench accuracy --help."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan or perf"));
+    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan, perf or accuracy"));
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Frame width (default 640)."), QStringLiteral("W"), QStringLiteral("640"));
     const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Frame height (default 360)."), QStringLiteral("H"), QStringLiteral("360"));

@@ -1,4 +1,5 @@
 #include "cli/PerfReport.h"
+#include "cli/ReportText.h"
 
 #include "plot/ChartPainter.h"
 
@@ -12,12 +13,8 @@ namespace vct::cli {
 
 namespace {
 
-template <typename... Args> std::string format(const char* pattern, Args... args)
-{
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, pattern, args...);
-    return buffer;
-}
+using report_text::format;
+using report_text::csvField;
 
 /** Milliseconds with precision that suits their size. */
 std::string ms(double v)
@@ -40,16 +37,6 @@ std::string withSeparators(std::uint64_t v)
 std::string mib(std::size_t bytes)
 {
     return format("%.1f", double(bytes) / (1024.0 * 1024.0));
-}
-
-std::string csvField(const std::string& text)
-{
-    if (text.find_first_of(",\"\n") == std::string::npos)
-        return text;
-    std::string quoted = "\"";
-    for (char c : text)
-        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
 }
 
 std::string sweepNames(unsigned sweeps)

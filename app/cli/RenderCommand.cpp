@@ -5,6 +5,7 @@
 #include "document/LightsFile.h"
 #include "document/SceneLoader.h"
 #include "cli/SceneInput.h"
+#include "cli/TerminalProgress.h"
 #include "cli/StatsJson.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
@@ -22,7 +23,6 @@
 #include <cstdio>
 #include <limits>
 
-#include <unistd.h>
 
 namespace vct::cli {
 
@@ -60,20 +60,9 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
     render::ReferenceStats stats;
     try {
         render::ReferenceRenderer renderer(scene, camera, width, height, request.settings);
-        // A terminal gets one line redrawn in place; a log gets a line per 10%.
-        const bool terminal = isatty(fileno(stderr)) != 0;
-        const int step = terminal ? 1 : 10;
-        int lastPercent = -1;
-        const bool done = renderer.render(request.samplesPerPixel, [&](double fraction) {
-            const int percent = int(fraction * 100.0) / step * step;
-            if (percent == lastPercent)
-                return;
-            lastPercent = percent;
-            std::fprintf(stderr, terminal ? "\rvct-render: reference %3d%%" : "vct-render: reference %3d%%\n", percent);
-            std::fflush(stderr);
-        });
-        if (terminal)
-            std::fprintf(stderr, "\n");
+        TerminalProgress progress("vct-render: reference");
+        const bool done = renderer.render(request.samplesPerPixel, [&](double fraction) { progress(fraction); });
+        progress.finish();
         if (!done)
             return fail(3, QStringLiteral("the reference render stopped before it finished"));
         image = renderer.image();
@@ -192,26 +181,12 @@ int RenderCommand::run(int argc, char** argv)
     if (!framesOk || frames < 1 || frames > 1000)
         return fail(1, QStringLiteral("--frames must be 1..1000"));
 
-    if (parser.isSet(lightsOption)) {
-        // An explicit lights file replaces the lights of the scene (or of a sibling NAME.lights.json).
-        render::Scene lit = scene;
-        lit.pointLights.clear();
-        lit.directionalLights.clear();
-        if (!doc::LightsFile::read(parser.value(lightsOption), lit, &error))
-            return fail(1, error);
-        scene = std::move(lit);
-    }
-    int width = info.width > 0 ? info.width : 640;
-    int height = info.height > 0 ? info.height : 360;
-    render::Camera camera = scene.camera;
-    if (parser.isSet(cameraOption)) {
-        doc::CameraSetup setup;
-        if (!doc::CameraFile::read(parser.value(cameraOption), setup, &error))
-            return fail(1, error);
-        camera = setup.camera;
-        width = setup.width;
-        height = setup.height;
-    }
+    ViewInput view;
+    if (!resolveViewInput(parser.value(lightsOption), parser.value(cameraOption), info, scene, view, &error))
+        return fail(1, error);
+    render::Camera camera = view.camera;
+    int width = view.width;
+    int height = view.height;
     for (const auto& [option, target] : {std::pair{&widthOption, &width}, std::pair{&heightOption, &height}})
         if (parser.isSet(*option)) {
             bool ok = false;

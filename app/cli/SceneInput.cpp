@@ -1,6 +1,8 @@
 #include "cli/SceneInput.h"
 
+#include "document/CameraFile.h"
 #include "document/Document.h"
+#include "document/LightsFile.h"
 #include "document/SceneLoader.h"
 
 namespace vct::cli {
@@ -30,6 +32,32 @@ QString applySettingAssignments(const QStringList& assignments, render::RenderSe
             return QString::fromStdString(problem);
     }
     return {};
+}
+
+bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, const doc::SceneLoadInfo& info,
+    render::Scene& scene, ViewInput& view, QString* error)
+{
+    if (!lightsPath.isEmpty()) {
+        // Replaces the lights of the scene (or of a sibling NAME.lights.json); the scene is untouched on error.
+        render::Scene lit = scene;
+        lit.pointLights.clear();
+        lit.directionalLights.clear();
+        if (!doc::LightsFile::read(lightsPath, lit, error))
+            return false;
+        scene = std::move(lit);
+    }
+    view.width = info.width > 0 ? info.width : 640;
+    view.height = info.height > 0 ? info.height : 360;
+    view.camera = scene.camera;
+    if (!cameraPath.isEmpty()) {
+        doc::CameraSetup setup;
+        if (!doc::CameraFile::read(cameraPath, setup, error))
+            return false;
+        view.camera = setup.camera;
+        view.width = setup.width;
+        view.height = setup.height;
+    }
+    return true;
 }
 
 } // namespace vct::cli

@@ -16,6 +16,20 @@ namespace vct::cli {
 bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSettings& settings,
     doc::SceneLoadInfo& info, QString* error);
 
+/** What a command renders from: the camera and the image size. */
+struct ViewInput {
+    render::Camera camera;
+    int width = 640;
+    int height = 360;
+};
+
+/**
+ * Resolves the view of a loaded scene: an explicit lights file (empty path: none) replaces the scene's lights;
+ * the camera and size come from the camera file (empty path: none), else from the project or scene.
+ */
+bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, const doc::SceneLoadInfo& info,
+    render::Scene& scene, ViewInput& view, QString* error);
+
 /** Applies `key=value` assignments (from --set) in order; returns an empty string or the first problem. */
 QString applySettingAssignments(const QStringList& assignments, render::RenderSettings& settings);
 
