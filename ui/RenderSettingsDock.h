@@ -58,6 +58,8 @@ private:
     QComboBox* m_resolution = nullptr;
     QCheckBox* m_conservative = nullptr;
     QCheckBox* m_anisotropic = nullptr;
+    QComboBox* m_bounces = nullptr;
+    QComboBox* m_indirectResolution = nullptr;
     QSpinBox* m_coneCount = nullptr;
     QDoubleSpinBox* m_diffuseAperture = nullptr;
     QDoubleSpinBox* m_specularAperture = nullptr;

@@ -17,21 +17,26 @@ struct RenderSettings {
     int voxelResolution = 128;          ///< Grid cells per side, power of two, 8..512.
     bool conservativeVoxelization = true;
     /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
-    /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample.
-    bool anisotropicMips = false;
+    /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample. On by
+    /// default: with 30-degree cones it is the largest accuracy gain measured (docs/ACCURACY.md, "Recommended
+    /// defaults and presets": relative MSE 0.37 -> 0.22 in the Cornell box, 0.26 -> 0.12 in the atrium).
+    bool anisotropicMips = true;
     /// Light bounces the voxels carry: 1 = direct light and emission only (the cones add the one bounce seen
     /// per pixel); 2 = each surface voxel also gathers a bounce through the diffuse cones (VoxelBouncePass), so
     /// pixels see two. Closed rooms are otherwise too dark (docs/ACCURACY.md has the measured difference).
     int bounces = 1;
     int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
-    float diffuseApertureDeg = 60.0f;   ///< Full cone angle of each diffuse cone.
+    /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30 degrees is
+    /// on the accuracy frontier of both studied scenes, and nine cones were no better (docs/ACCURACY.md).
+    float diffuseApertureDeg = 30.0f;
     float specularApertureDeg = 15.0f;  ///< Narrowest specular cone; glossier lobes are clamped to it.
     float stepFactor = 1.0f;            ///< beta: step = cone diameter * beta.
     float maxDistance = -1.0f;          ///< Cone length in metres; negative = the grid's diagonal.
     float coneOffsetVoxels = 1.5f;      ///< Cone origins start this many voxels along the normal.
     /// Indirect light is traced for one pixel in divisor x divisor (1, 2 or 4) and upsampled with depth- and
     /// normal-aware weights: indirect light varies slowly, and the cones are most of a frame's cost.
-    int indirectDivisor = 2;
+    /// Quarter resolution (4) costs no measurable accuracy against half or full (within 1.5%, docs/ACCURACY.md).
+    int indirectDivisor = 4;
     bool direct = true;
     bool indirectDiffuse = true;
     bool indirectSpecular = true;

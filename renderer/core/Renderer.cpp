@@ -110,7 +110,8 @@ struct CameraMatrices {
 
 CameraMatrices cameraMatrices(const Camera& camera, float aspect, const Aabb& bounds)
 {
-    const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    // Only a guard against a point-sized scene; an absolute floor near real sizes would break tiny scenes.
+    const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-20f);
     const float farPlane = glm::length(camera.position - bounds.center()) + 2.0f * sceneRadius;
     const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
     return {glm::lookAt(camera.position, camera.lookAt, camera.up),

@@ -75,7 +75,8 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
     // Standard cube-map face orientation, so texture(samplerCubeArray, direction) finds the right texel.
     static const glm::vec3 kFaceDirection[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    const float nearPlane = std::max(shadows.pointFar * 1e-4f, 1e-4f);
+    // Relative to the far plane only: an absolute floor would clip most of a scene measured in 1e-4 units.
+    const float nearPlane = shadows.pointFar * 1e-4f;
     const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, nearPlane, shadows.pointFar);
     m_program.set("uLinearDistance", 1);
     m_program.set("uFar", shadows.pointFar);
@@ -126,11 +127,13 @@ void ShadowMapPass::execute(FrameContext& frame)
     Aabb bounds;
     bounds.extend(frame.voxels.frame.origin);
     bounds.extend(frame.voxels.frame.origin + glm::vec3(frame.voxels.frame.extent));
-    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    // The floors only keep a degenerate (empty or point-sized) grid from giving a zero depth range; they are far
+    // below any scene size, so tiny scenes keep their proportions (tests/hardcases, scale invariance).
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-20f);
     shadows.pointFar = 0.0f;
     for (int i = 0; i < points; ++i)
         shadows.pointFar = std::max(shadows.pointFar, glm::length(scene.pointLights[std::size_t(i)].position - bounds.center()) + radius);
-    shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-3f);
+    shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-20f);
     shadows.directionalMatrices.clear();
     for (int i = 0; i < directionals; ++i) {
         const glm::vec3 dir = glm::normalize(scene.directionalLights[std::size_t(i)].direction);

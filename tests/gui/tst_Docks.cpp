@@ -311,19 +311,36 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetHigh"), Qt::LeftButton);
     const render::RenderSettings& s = document->state().settings;
-    QCOMPARE(s.voxelResolution, 256);
-    QCOMPARE(s.diffuseConeCount, 9);
-    QCOMPARE(s.diffuseApertureDeg, 45.0f);
-    QCOMPARE(s.stepFactor, 0.75f);
+    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with a second bounce.
+    QCOMPARE(s.voxelResolution, 128);
+    QCOMPARE(s.diffuseConeCount, 5);
+    QCOMPARE(s.diffuseApertureDeg, 30.0f);
+    QVERIFY(s.anisotropicMips);
+    QCOMPARE(s.bounces, 2);
+    QCOMPARE(s.indirectDivisor, 4);
     QCOMPARE(document->undoStack()->count(), 1);
     QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());
-    QVERIFY(!child<QPushButton>(&dock, "presetFast")->isChecked());
-    QCOMPARE(child<QSpinBox>(&dock, "diffuseConeCount")->value(), 9);
+    QVERIFY(!child<QPushButton>(&dock, "presetBalanced")->isChecked());
+    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), 2);
+
+    QTest::mouseClick(child<QPushButton>(&dock, "presetFast"), Qt::LeftButton);
+    QCOMPARE(document->state().settings.voxelResolution, 64);
+    QVERIFY(!document->state().settings.anisotropicMips);
+    QCOMPARE(document->state().settings.bounces, 1);
+    QCOMPARE(child<QComboBox>(&dock, "voxelResolutionCombo")->currentData().toInt(), 64);
+    QCOMPARE(document->undoStack()->count(), 2);
 
     document->undoStack()->undo();
-    QCOMPARE(document->state().settings.voxelResolution, before.voxelResolution);
-    QCOMPARE(document->state().settings.diffuseConeCount, before.diffuseConeCount);
-    QCOMPARE(child<QComboBox>(&dock, "voxelResolutionCombo")->currentData().toInt(), before.voxelResolution);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().settings.bounces, before.bounces);
+    QCOMPARE(document->state().settings.anisotropicMips, before.anisotropicMips);
+    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), before.bounces);
+    QVERIFY(child<QPushButton>(&dock, "presetBalanced")->isChecked() == (before.bounces == 1 && before.anisotropicMips));
+
+    // The indirect-resolution combo edits the setting like any other field.
+    auto* indirect = child<QComboBox>(&dock, "indirectResolutionCombo");
+    indirect->setCurrentIndex(indirect->findData(1));
+    QCOMPARE(document->state().settings.indirectDivisor, 1);
 }
 
 void TstDocks::renderSettingsResolutionCombo()

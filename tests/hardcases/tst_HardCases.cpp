@@ -133,20 +133,32 @@ void HardCasesTest::scaleAndOffsetInvariance_data()
 {
     QTest::addColumn<float>("scale");
     QTest::addColumn<glm::vec3>("offset");
+    QTest::addColumn<bool>("anisotropic");
     QTest::addColumn<double>("tolerance"); // relative MSE against the unit room
-    QTest::newRow("tiny 1e-4") << 1e-4f << glm::vec3(0.0f) << 1e-3;
-    QTest::newRow("huge 1e4") << 1e4f << glm::vec3(0.0f) << 1e-3;
+    QTest::newRow("tiny 1e-4") << 1e-4f << glm::vec3(0.0f) << false << 1e-3;
+    QTest::newRow("huge 1e4") << 1e4f << glm::vec3(0.0f) << false << 1e-3;
     // float32 resolves positions near 1e5 to 0.008: coarser than anything in a 2-unit room, so allow more.
-    QTest::newRow("offset 1e5") << 1.0f << glm::vec3(1e5f, -1e5f, 1e5f) << 5e-2;
+    QTest::newRow("offset 1e5") << 1.0f << glm::vec3(1e5f, -1e5f, 1e5f) << false << 5e-2;
+    // Anisotropic mips (the default) composite occupancy front to back, so a wall voxel that a rounding
+    // difference turns on or off changes a whole coarse column's opacity: about ten times the box filter's
+    // sensitivity, measured 7.7e-3 (tiny) and 5e-4 (huge) at 32^3 with 30-degree cones (docs/STABILITY.md).
+    QTest::newRow("tiny 1e-4, anisotropic") << 1e-4f << glm::vec3(0.0f) << true << 1e-2;
+    QTest::newRow("huge 1e4, anisotropic") << 1e4f << glm::vec3(0.0f) << true << 1e-2;
+    QTest::newRow("offset 1e5, anisotropic") << 1.0f << glm::vec3(1e5f, -1e5f, 1e5f) << true << 5e-2;
 }
 
 void HardCasesTest::scaleAndOffsetInvariance()
 {
     QFETCH(float, scale);
     QFETCH(glm::vec3, offset);
+    QFETCH(bool, anisotropic);
     QFETCH(double, tolerance);
     render::RenderSettings settings;
     settings.voxelResolution = 32;
+    settings.anisotropicMips = anisotropic;
+    // The box-filtered rows keep the configuration their 1e-3 was set for (60-degree cones); the anisotropic
+    // rows use the default 30-degree cones.
+    settings.diffuseApertureDeg = anisotropic ? 30.0f : 60.0f;
     const render::RadianceImage unit = render(room(), settings);
     expectSane(unit, 10.0f);
     const render::RadianceImage moved = render(room(scale, offset), settings);
@@ -274,6 +286,7 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 {
     render::RenderSettings settings;
     settings.voxelResolution = 32;
+    settings.anisotropicMips = false; // the figures below are for one box-filtered chain
     const std::string problem = settings.set("voxel_res", "512");
     QVERIFY2(problem.find("voxel_res=512 needs 12.1 GiB") != std::string::npos, problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
@@ -307,24 +320,32 @@ void HardCasesTest::whiteFurnace()
     scene.materials[0].albedo = glm::vec3(rho);
     scene.materials[0].emission = glm::vec3(emission);
     const float expected = emission + rho * emission;
-    for (const bool anisotropic : {false, true}) {
+    // 5% with 60-degree cones: voxels on the box's edges and corners average wall with empty space, so cones
+    // leaving through them see slightly less than a full wall. 10% with the default 30-degree cones: a narrow
+    // cone's geometric steps (1.5x per step) can carry its last sample past a wall on the grid's boundary, so
+    // part of the wall is seen at a coarser, half-empty level (measured 7.2%; docs/STABILITY.md).
+    struct Case {
+        bool anisotropic;
+        float apertureDeg;
+        float tolerance; // relative; 0 = only "never less than the emission itself"
+    };
+    for (const Case c : {Case {false, 60.0f, 0.0f}, Case {true, 60.0f, 0.05f}, Case {true, 30.0f, 0.10f}}) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
         settings.indirectDivisor = 1;
-        settings.anisotropicMips = anisotropic;
+        settings.anisotropicMips = c.anisotropic;
+        settings.diffuseApertureDeg = c.apertureDeg;
         const render::RadianceImage image = render(scene, settings, 48);
         expectSane(image, 2.0f * expected);
         const float mean = io::ImageMetrics::meanRadiance(image).r;
-        qInfo("white furnace with %s mips: mean %.4f, expected %.4f (bounce %.0f%% of rho E)",
-            anisotropic ? "anisotropic" : "box-filtered", double(mean), double(expected),
+        qInfo("white furnace with %s mips, %.0f-degree cones: mean %.4f, expected %.4f (bounce %.0f%% of rho E)",
+            c.anisotropic ? "anisotropic" : "box-filtered", double(c.apertureDeg), double(mean), double(expected),
             100.0 * double(mean - emission) / double(rho * emission));
-        if (!anisotropic) {
+        if (c.tolerance == 0.0f) {
             QVERIFY(mean >= emission); // never less than the emission itself
             continue;
         }
-        // 5%: voxels on the box's edges and corners average wall with empty space, so cones leaving
-        // through them see slightly less than a full wall.
-        QVERIFY2(std::abs(mean - expected) <= 0.05f * expected, qPrintable(QString::number(double(mean))));
+        QVERIFY2(std::abs(mean - expected) <= c.tolerance * expected, qPrintable(QString::number(double(mean))));
         int outliers = 0;
         for (const glm::vec3& p : image.pixels)
             outliers += std::abs(p.r - expected) > 0.15f * expected ? 1 : 0;
@@ -348,6 +369,7 @@ void HardCasesTest::whiteFurnaceSecondBounce()
     settings.voxelResolution = 64;
     settings.indirectDivisor = 1;
     settings.anisotropicMips = true;
+    settings.diffuseApertureDeg = 60.0f; // the capture c above was measured with these cones
     const float oneBounce = io::ImageMetrics::meanRadiance(render(scene, settings, 48)).r;
     const float capture = (oneBounce - emission) / (rho * emission);
     settings.bounces = 2;
