@@ -137,6 +137,15 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_indirectResolution->addItem(tr("Full"), 1);
     m_indirectResolution->addItem(tr("Half"), 2);
     m_indirectResolution->addItem(tr("Quarter"), 4);
+    m_irradianceCache = makeCheck(tr("Irradiance cache"),
+        tr("Gather the diffuse cones once per surface cell when the light changes, and look them up per pixel: "
+           "camera moves trace no diffuse cones; light edits cost a gather over the whole grid"));
+    m_irradianceCache->setObjectName(QStringLiteral("irradianceCacheCheck"));
+    m_irradianceCell = new QComboBox;
+    m_irradianceCell->setObjectName(QStringLiteral("irradianceCellCombo"));
+    for (int cell : {1, 2, 4})
+        m_irradianceCell->addItem(QString::number(cell) + QStringLiteral("³ ") + tr("voxels"), cell);
+    m_irradianceCell->setToolTip(tr("Voxels per cache cell: larger cells gather faster and blur more"));
     m_indirectResolution->setToolTip(tr("Cones are traced for one pixel in N×N and upsampled with depth- and "
                                         "normal-aware weights"));
 
@@ -216,6 +225,8 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     coneForm->addRow(tr("Max distance"), m_maxDistance);
     coneForm->addRow(tr("Cone offset"), m_coneOffset);
     coneForm->addRow(tr("Indirect resolution"), m_indirectResolution);
+    coneForm->addRow(m_irradianceCache);
+    coneForm->addRow(tr("Cache cell"), m_irradianceCell);
     auto [terms, termForm] = group(tr("Terms"));
     for (QCheckBox* check : { m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission })
         termForm->addRow(check);
@@ -255,6 +266,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     bindCombo(m_shadowMap, &render::RenderSettings::shadowMapSize);
     bindCombo(m_bounces, &render::RenderSettings::bounces);
     bindCombo(m_indirectResolution, &render::RenderSettings::indirectDivisor);
+    bindCombo(m_irradianceCell, &render::RenderSettings::irradianceCellSize);
     connect(m_view, &QComboBox::currentIndexChanged, this, [this](int row) {
         if (row < 0)
             return;
@@ -285,6 +297,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     };
     bindCheck(m_conservative, &render::RenderSettings::conservativeVoxelization);
     bindCheck(m_anisotropic, &render::RenderSettings::anisotropicMips);
+    bindCheck(m_irradianceCache, &render::RenderSettings::irradianceCache);
     bindCheck(m_direct, &render::RenderSettings::direct);
     bindCheck(m_indirectDiffuse, &render::RenderSettings::indirectDiffuse);
     bindCheck(m_indirectSpecular, &render::RenderSettings::indirectSpecular);
@@ -387,7 +400,7 @@ void RenderSettingsDock::load()
         return;
     const render::RenderSettings& s = m_document->state().settings;
 
-    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces, m_indirectResolution, m_coneCount,
+    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces, m_indirectResolution, m_irradianceCache, m_irradianceCell, m_coneCount,
         m_diffuseAperture, m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct,
         m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_fast,
         m_balanced, m_high };
@@ -399,6 +412,9 @@ void RenderSettingsDock::load()
     m_conservative->setChecked(s.conservativeVoxelization);
     m_anisotropic->setChecked(s.anisotropicMips);
     selectIntItem(m_bounces, s.bounces, QString::number(s.bounces));
+    m_irradianceCache->setChecked(s.irradianceCache);
+    selectIntItem(m_irradianceCell, s.irradianceCellSize, QString::number(s.irradianceCellSize));
+    m_irradianceCell->setEnabled(s.irradianceCache);
     selectIntItem(m_indirectResolution, s.indirectDivisor, QStringLiteral("1/") + QString::number(s.indirectDivisor));
     if (m_coneCount->value() != s.diffuseConeCount)
         m_coneCount->setValue(s.diffuseConeCount);

@@ -60,6 +60,8 @@ private:
     QCheckBox* m_anisotropic = nullptr;
     QComboBox* m_bounces = nullptr;
     QComboBox* m_indirectResolution = nullptr;
+    QCheckBox* m_irradianceCache = nullptr;
+    QComboBox* m_irradianceCell = nullptr;
     QSpinBox* m_coneCount = nullptr;
     QDoubleSpinBox* m_diffuseAperture = nullptr;
     QDoubleSpinBox* m_specularAperture = nullptr;

@@ -44,6 +44,10 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     if (voxels.radiance)
         for (int level = 0; level < voxels.radiance.levels(); ++level)
             counts.push_back({"radiance level " + std::to_string(level), count(voxels.radiance, level)});
+    if (voxels.irradiance)
+        counts.push_back({"voxel irradiance cache", count(voxels.irradiance, 0)});
+    if (voxels.irradianceNormal)
+        counts.push_back({"voxel irradiance cell normals", count(voxels.irradianceNormal, 0)});
     if (voxels.bounced)
         for (int level = 0; level < voxels.bounced.levels(); ++level)
             counts.push_back({"second-bounce radiance level " + std::to_string(level), count(voxels.bounced, level)});

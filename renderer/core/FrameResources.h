@@ -30,6 +30,11 @@ struct VoxelVolume {
     /// and its directional chains when anisotropic. Empty otherwise. Cones sample these when present.
     gl::Texture bounced;
     std::array<gl::Texture, 6> bouncedDirectional;
+    /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of RenderSettings::irradianceCellSize^3
+    /// voxels: rgba16f, rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface, a = ambient
+    /// visibility, a = -1 where the cell holds no single-sided surface; and that surface's mean normal (w = 1).
+    gl::Texture irradiance;
+    gl::Texture irradianceNormal;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
     VoxelRegion changedRegion;

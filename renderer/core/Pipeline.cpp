@@ -12,6 +12,7 @@ const char* resourceName(Resource resource)
     case Resource::VoxelMaterials: return "voxel materials";
     case Resource::VoxelRadiance: return "voxel radiance";
     case Resource::VoxelMips: return "voxel mips";
+    case Resource::VoxelIrradiance: return "voxel irradiance";
     case Resource::GBuffer: return "G-buffer";
     case Resource::IndirectLight: return "indirect light";
     case Resource::FinalImage: return "final image";

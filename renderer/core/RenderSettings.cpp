@@ -86,6 +86,8 @@ const std::map<std::string, Field>& fields()
         t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
         t["anisotropic"] = makeField(&RenderSettings::anisotropicMips, "direction-dependent mips: six chains composited along each axis (on/off)");
         t["bounces"] = makeField(&RenderSettings::bounces, "light bounces carried by the voxels: 1, or 2 to gather a second bounce per voxel");
+        t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache, "diffuse cones gathered once per surface voxel, looked up per pixel (on/off)");
+        t["irradiance_cell"] = makeField(&RenderSettings::irradianceCellSize, "irradiance cache cell side in voxels: 1, 2 or 4");
         t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
         t["diffuse_aperture"] = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
         t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
@@ -158,6 +160,8 @@ std::string RenderSettings::validate() const
     const bool powerOfTwo = voxelResolution > 0 && (voxelResolution & (voxelResolution - 1)) == 0;
     if (!powerOfTwo || voxelResolution < 8 || voxelResolution > 512)
         return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
+    if (irradianceCellSize != 1 && irradianceCellSize != 2 && irradianceCellSize != 4)
+        return "irradiance_cell must be 1, 2 or 4, not " + std::to_string(irradianceCellSize);
     if (bounces != 1 && bounces != 2)
         return "bounces must be 1 or 2, not " + std::to_string(bounces);
     if (diffuseConeCount < 1 || diffuseConeCount > 32)
@@ -209,6 +213,8 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         bytes += 6 * chain(n / 2, 8, true);                      // six directional chains from level 1
     if (bounces >= 2)                                            // the second-bounce volume and its chains
         bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 6 * chain(n / 2, 8, true) : 0);
+    if (irradianceCache)                                         // gathered irradiance and cell normals, rgba16f
+        bytes += 2 * chain(std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1), 8, false);
     return bytes;
 }
 

@@ -25,6 +25,12 @@ struct RenderSettings {
     /// per pixel); 2 = each surface voxel also gathers a bounce through the diffuse cones (VoxelBouncePass), so
     /// pixels see two. Closed rooms are otherwise too dark (docs/ACCURACY.md has the measured difference).
     int bounces = 1;
+    /// Gather the diffuse cones once per surface voxel whenever the voxels' light changes (VoxelIrradiancePass),
+    /// and give each pixel a normal-aware trilinear lookup of that instead of its own cones: a camera move then
+    /// traces no diffuse cones at all. Pixels with no matching surface voxel nearby still trace their own.
+    bool irradianceCache = false;
+    /// Voxels per side of one irradiance-cache cell (1, 2 or 4): one gather per cell that holds a surface.
+    int irradianceCellSize = 2;
     int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
     /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30 degrees is
     /// on the accuracy frontier of both studied scenes, and nine cones were no better (docs/ACCURACY.md).

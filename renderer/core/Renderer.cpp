@@ -14,6 +14,7 @@
 #include "passes/InjectLightPass.h"
 #include "passes/MipmapPass.h"
 #include "passes/VoxelBouncePass.h"
+#include "passes/VoxelIrradiancePass.h"
 #include "passes/ShadowMapPass.h"
 #include "passes/VoxelizePass.h"
 
@@ -55,6 +56,7 @@ std::unique_ptr<Pipeline> makePipeline()
     passes.push_back(std::make_unique<InjectLightPass>());
     passes.push_back(std::make_unique<MipmapPass>());
     passes.push_back(std::make_unique<VoxelBouncePass>());
+    passes.push_back(std::make_unique<VoxelIrradiancePass>());
     passes.push_back(std::make_unique<GBufferPass>());
     passes.push_back(std::make_unique<ConeTracePass>());
     passes.push_back(std::make_unique<CompositePass>());

@@ -60,7 +60,8 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
     const std::pair<const char*, const gl::Texture*> named[] = { { "accumulators", &v.accumulators },
         { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
         { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
-        { "emission", &v.emission }, { "radiance", &v.radiance }, { "bounced", &v.bounced } };
+        { "emission", &v.emission }, { "radiance", &v.radiance }, { "bounced", &v.bounced },
+        { "irradiance cache", &v.irradiance }, { "irradiance cell normals", &v.irradianceNormal } };
     for (const auto& [name, texture] : named)
         if (*texture)
             list.push_back(describe(name, *texture));

@@ -4,6 +4,9 @@
 #include "core/FrameContext.h"
 #include "core/FrameRules.h"
 #include "passes/ConeTracingSetup.h"
+#include "passes/VoxelIrradiancePass.h"
+
+#include <tuple>
 
 #include <glm/trigonometric.hpp>
 
@@ -26,6 +29,8 @@ PassDecision ConeTracePass::plan(const FrameContext& frame)
         reason += frame.settings.indirectSpecular ? " (no glossy material: no specular cones)" : " (specular off)";
     if (diffuse && !FrameRules::ambientOcclusionNeeded(frame))
         reason += ", no AO";
+    if (diffuse && VoxelIrradiancePass::inUse(frame))
+        reason += ", diffuse looked up in the irradiance cache";
     return {PassDecision::Action::Run, reason};
 }
 
@@ -35,16 +40,25 @@ void ConeTracePass::execute(FrameContext& frame)
     const VoxelVolume& v = frame.voxels;
     const bool anisotropic = settings.anisotropicMips && v.directional[0];
     const bool counting = frame.coneSampleCounter != nullptr;
-    gl::Program& program = counting ? m_countingPrograms[anisotropic ? 1 : 0] : anisotropic ? m_anisotropicProgram : m_program;
+    const bool cached = VoxelIrradiancePass::inUse(frame) && v.irradiance;
+    gl::Program& program = m_programs[anisotropic ? 1 : 0][counting ? 1 : 0][cached ? 1 : 0];
     if (!program) {
         std::vector<std::string> defines;
-        if (anisotropic)
-            defines.push_back("ANISOTROPIC");
-        if (counting)
-            defines.push_back("COUNT_SAMPLES");
-        program = frame.shaders.build({std::string(anisotropic ? "cone trace (anisotropic)" : "cone trace")
-                + (counting ? ", counting samples" : ""),
-            {"common/FullScreen.vert", "cone/ConeTrace.frag"}, defines});
+        std::string name = "cone trace";
+        for (const auto& [on, define, label] : {std::tuple{anisotropic, "ANISOTROPIC", " (anisotropic)"},
+                 std::tuple{counting, "COUNT_SAMPLES", ", counting samples"},
+                 std::tuple{cached, "IRRADIANCE_CACHE", ", irradiance cache"}})
+            if (on) {
+                defines.push_back(define);
+                name += label;
+            }
+        program = frame.shaders.build({name, {"common/FullScreen.vert", "cone/ConeTrace.frag"}, defines});
+    }
+    if (cached) {
+        v.irradiance.bindUnit(12);
+        v.irradianceNormal.bindUnit(13);
+        program.set("uCells", v.irradiance.width());
+        program.set("uCellSize", v.frame.extent / float(v.irradiance.width()));
     }
     if (counting)
         frame.coneSampleCounter->bind();

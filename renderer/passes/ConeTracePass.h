@@ -12,16 +12,15 @@ public:
     const char* name() const override { return "cone trace"; }
     PassDeclaration declare() const override
     {
-        return {{Resource::GBuffer, Resource::VoxelMips}, {Resource::IndirectLight}};
+        return {{Resource::GBuffer, Resource::VoxelMips, Resource::VoxelIrradiance}, {Resource::IndirectLight}};
     }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
     void invalidate() override {}
 
 private:
-    gl::Program m_program;            ///< box-filtered mips
-    gl::Program m_anisotropicProgram; ///< direction-dependent mips
-    gl::Program m_countingPrograms[2]; ///< COUNT_SAMPLES variants for vct-bench perf: [0] box mips, [1] anisotropic
+    /// Shader variants, [anisotropic mips][COUNT_SAMPLES for vct-bench perf][irradiance cache lookup].
+    gl::Program m_programs[2][2][2];
     gl::VertexArray m_emptyVao;
 };
 

@@ -16,9 +16,6 @@ layout(rgba16f, binding = 0) writeonly uniform image3D uBounced;
 
 uniform int uResolution;
 uniform float uConeOffset; // metres along the normal
-uniform int uConeCount;
-uniform vec4 uCones[MAX_CONES]; // tangent-space axis, w = weight
-uniform float uDiffuseTanHalf;
 
 void main()
 {
@@ -36,14 +33,6 @@ void main()
     }
     vec3 n = normalSum / normalLength;
     vec3 origin = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize + n * uConeOffset;
-    vec3 t, b;
-    tangentBasis(n, t, b);
-    vec3 gathered = vec3(0.0);
-    for (int i = 0; i < uConeCount; ++i) {
-        vec3 axis = uCones[i].xyz;
-        vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
-        float unused;
-        gathered += uCones[i].w * traceCone(origin, dir, uDiffuseTanHalf, unused).rgb;
-    }
+    vec3 gathered = gatherDiffuse(origin, n).rgb;
     imageStore(uBounced, voxel, vec4(first.rgb + albedo.rgb * gathered * albedo.a, first.a));
 }

@@ -87,3 +87,26 @@ void tangentBasis(vec3 n, out vec3 t, out vec3 b)
     b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
+#ifdef MAX_CONES
+// The diffuse cone set (core/ConeSet): tangent-space axes whose weights split the cosine lobe, summing to one.
+uniform int uConeCount;
+uniform vec4 uCones[MAX_CONES]; // tangent-space axis, w = weight
+uniform float uDiffuseTanHalf;
+
+// The diffuse cones around n from origin: rgb = sum_i w_i L_i (irradiance / pi), a = ambient visibility.
+vec4 gatherDiffuse(vec3 origin, vec3 n)
+{
+    vec3 t, b;
+    tangentBasis(n, t, b);
+    vec3 sum = vec3(0.0);
+    float occlusion = 0.0;
+    for (int i = 0; i < uConeCount; ++i) {
+        vec3 axis = uCones[i].xyz;
+        vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
+        float coneOcclusion;
+        sum += uCones[i].w * traceCone(origin, dir, uDiffuseTanHalf, coneOcclusion).rgb;
+        occlusion += uCones[i].w * coneOcclusion;
+    }
+    return vec4(sum, clamp(1.0 - occlusion, 0.0, 1.0));
+}
+#endif

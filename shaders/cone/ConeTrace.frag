@@ -17,15 +17,54 @@ uint gSamples = 0u;
 #include "common/ConeTracing.glsl"
 
 uniform float uConeOffset;        // metres along the normal
-uniform int uConeCount;
-uniform vec4 uCones[MAX_CONES];   // tangent-space axis, w = weight
-uniform float uDiffuseTanHalf;
 uniform float uSpecularMinTanHalf;
 uniform bool uDiffuseEnabled;
 uniform bool uSpecularEnabled;
 uniform vec3 uCameraPosition;
 uniform int uDivisor;     // one traced pixel stands for uDivisor x uDivisor screen pixels
 uniform ivec3 uFullSize;  // full-resolution width, height
+
+#ifdef IRRADIANCE_CACHE
+// passes/VoxelIrradiancePass: the diffuse cones gathered once per surface voxel along its own normal.
+layout(binding = 12) uniform sampler3D uIrradiance;
+layout(binding = 13) uniform sampler3D uCellNormal;
+uniform int uCells;         // cache cells per side
+uniform float uCellSize;    // metres
+
+// Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does
+// (within 60 degrees, weighted by cos^4), so light from the far side of a wall or a corner's other face does
+// not bleed in. The small floor on the trilinear weight lets a lone matching cell count. False when no
+// cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
+bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
+{
+    vec3 g = (p - uGridOrigin) / uCellSize - 0.5;
+    ivec3 base = ivec3(floor(g));
+    vec3 f = g - vec3(base);
+    vec4 sum = vec4(0.0);
+    float weightSum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        ivec3 corner = ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        ivec3 c = base + corner;
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(uCells))))
+            continue;
+        vec4 cached = texelFetch(uIrradiance, c, 0);
+        if (cached.a < 0.0)
+            continue;
+        float agreement = dot(texelFetch(uCellNormal, c, 0).xyz, n);
+        if (agreement < 0.5)
+            continue;
+        vec3 t = mix(vec3(1.0) - f, f, vec3(corner));
+        float a2 = agreement * agreement;
+        float w = (t.x * t.y * t.z + 1e-3) * a2 * a2;
+        sum += w * cached;
+        weightSum += w;
+    }
+    if (weightSum <= 0.0)
+        return false;
+    result = sum / weightSum;
+    return true;
+}
+#endif
 
 layout(location = 0) out vec4 oDiffuse;  // rgb: sum_i w_i L_i, a: ambient visibility
 layout(location = 1) out vec4 oSpecular;
@@ -44,18 +83,12 @@ void main()
     vec3 origin = position.xyz + n * uConeOffset;
 
     if (uDiffuseEnabled) {
-        vec3 t, b;
-        tangentBasis(n, t, b);
-        vec3 sum = vec3(0.0);
-        float occlusion = 0.0;
-        for (int i = 0; i < uConeCount; ++i) {
-            vec3 axis = uCones[i].xyz;
-            vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
-            float coneOcclusion;
-            sum += uCones[i].w * traceCone(origin, dir, uDiffuseTanHalf, coneOcclusion).rgb;
-            occlusion += uCones[i].w * coneOcclusion;
-        }
-        oDiffuse = vec4(sum, clamp(1.0 - occlusion, 0.0, 1.0));
+#ifdef IRRADIANCE_CACHE
+        if (!lookUpIrradiance(position.xyz, n, oDiffuse))
+            oDiffuse = gatherDiffuse(origin, n);
+#else
+        oDiffuse = gatherDiffuse(origin, n);
+#endif
     }
     float shininess = normalShininess.w;
     vec3 specular = texelFetch(gSpecular, pixel, 0).rgb;
