@@ -46,6 +46,8 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
             counts.push_back({"radiance level " + std::to_string(level), count(voxels.radiance, level)});
     if (voxels.irradiance)
         counts.push_back({"voxel irradiance cache", count(voxels.irradiance, 0)});
+    if (voxels.irradianceBack)
+        counts.push_back({"voxel irradiance cache, back faces", count(voxels.irradianceBack, 0)});
     if (voxels.irradianceNormal)
         counts.push_back({"voxel irradiance cell normals", count(voxels.irradianceNormal, 0)});
     if (voxels.bounced)

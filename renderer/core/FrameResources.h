@@ -31,9 +31,11 @@ struct VoxelVolume {
     gl::Texture bounced;
     std::array<gl::Texture, 6> bouncedDirectional;
     /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of RenderSettings::irradianceCellSize^3
-    /// voxels: rgba16f, rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface, a = ambient
-    /// visibility, a = -1 where the cell holds no single-sided surface; and that surface's mean normal (w = 1).
+    /// voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface along
+    /// its normal (irradiance) and, for two-sided cells, against it (irradianceBack), a = ambient visibility,
+    /// a = -1 where not gathered; irradianceNormal: the cell normal, w = 0 none, 1 one-sided, 2 two-sided.
     gl::Texture irradiance;
+    gl::Texture irradianceBack;
     gl::Texture irradianceNormal;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.

@@ -213,8 +213,8 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         bytes += 6 * chain(n / 2, 8, true);                      // six directional chains from level 1
     if (bounces >= 2)                                            // the second-bounce volume and its chains
         bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 6 * chain(n / 2, 8, true) : 0);
-    if (irradianceCache)                                         // gathered irradiance and cell normals, rgba16f
-        bytes += 2 * chain(std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1), 8, false);
+    if (irradianceCache)                                         // irradiance front and back, cell normals, rgba16f
+        bytes += 3 * chain(std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1), 8, false);
     return bytes;
 }
 

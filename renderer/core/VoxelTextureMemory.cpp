@@ -61,7 +61,8 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
         { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
         { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
         { "emission", &v.emission }, { "radiance", &v.radiance }, { "bounced", &v.bounced },
-        { "irradiance cache", &v.irradiance }, { "irradiance cell normals", &v.irradianceNormal } };
+        { "irradiance cache", &v.irradiance }, { "irradiance cache, back faces", &v.irradianceBack },
+        { "irradiance cell normals", &v.irradianceNormal } };
     for (const auto& [name, texture] : named)
         if (*texture)
             list.push_back(describe(name, *texture));

@@ -57,6 +57,7 @@ void ConeTracePass::execute(FrameContext& frame)
     if (cached) {
         v.irradiance.bindUnit(12);
         v.irradianceNormal.bindUnit(13);
+        v.irradianceBack.bindUnit(14);
         program.set("uCells", v.irradiance.width());
         program.set("uCellSize", v.frame.extent / float(v.irradiance.width()));
     }

@@ -25,6 +25,7 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     if (!inUse(frame)) {
         v.irradiance = gl::Texture(); // the cone pass traces per pixel; the memory is not needed either
+        v.irradianceBack = gl::Texture();
         v.irradianceNormal = gl::Texture();
         m_radianceVersion = 0;
         return {PassDecision::Action::Skip,
@@ -48,10 +49,10 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
     if (!v.irradiance || v.irradiance.width() != cells) {
-        v.irradiance = gl::Texture::create3D(GL_RGBA16F, cells);
-        v.irradianceNormal = gl::Texture::create3D(GL_RGBA16F, cells);
-        v.irradiance.setFilter(GL_NEAREST, GL_NEAREST);
-        v.irradianceNormal.setFilter(GL_NEAREST, GL_NEAREST);
+        for (gl::Texture* t : {&v.irradiance, &v.irradianceBack, &v.irradianceNormal}) {
+            *t = gl::Texture::create3D(GL_RGBA16F, cells);
+            t->setFilter(GL_NEAREST, GL_NEAREST);
+        }
     }
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
     ConeTracingSetup::apply(program, frame, anisotropic, true);
@@ -62,7 +63,8 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.irradiance.bindImage(0, 0, GL_WRITE_ONLY);
-    v.irradianceNormal.bindImage(1, 0, GL_WRITE_ONLY);
+    v.irradianceBack.bindImage(1, 0, GL_WRITE_ONLY);
+    v.irradianceNormal.bindImage(2, 0, GL_WRITE_ONLY);
     program.use();
     const GLuint groups = GLuint((cells + 3) / 4);
     glDispatchCompute(groups, groups, groups);

@@ -9,9 +9,9 @@
 namespace vct::render {
 
 /**
- * The irradiance cache (RenderSettings::irradianceCache): every single-sided surface voxel traces the diffuse
- * cones along its own normal, through the volume the per-pixel cones would see, and stores what they gather
- * (VoxelVolume::irradiance). The cone pass then looks it up per pixel instead of tracing. Runs only when the
+ * The irradiance cache (RenderSettings::irradianceCache): every cell of irradianceCellSize^3 voxels that holds a
+ * surface traces the diffuse cones from it along its normal (both ways for a wall thinner than a voxel),
+ * through the volume the per-pixel cones would see, and stores what they gather (VoxelVolume::irradiance). The cone pass then looks it up per pixel instead of tracing. Runs only when the
  * voxels' light or a gather parameter changed, so a camera move traces no diffuse cones; skipped and its
  * texture released when the cache is off or nothing needs diffuse light.
  */

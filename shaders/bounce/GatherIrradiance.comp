@@ -1,9 +1,11 @@
 // The irradiance cache (passes/VoxelIrradiancePass): one gather of the diffuse cones per cell of uCellSize^3
-// voxels that holds a single-sided surface. The cell's surface is summarised by the mean position and mean
-// normal of its surface voxels; the cones start there, as a pixel's would, and what they gather,
-// sum_i w_i L_i, is stored with the ambient visibility in alpha (a = -1: no such surface in the cell).
-// Irradiance varies slowly over a surface, so a 2^3 cell costs an eighth of a per-voxel gather and
-// pixels interpolate between cells.
+// voxels that holds a surface. The cones start where a pixel's would, from the mean position of the cell's
+// surface voxels, and what they gather, sum_i w_i L_i, is stored with the ambient visibility in alpha.
+// Irradiance varies slowly over a surface, so a 2^3 cell costs far less than a gather per voxel and pixels
+// interpolate between cells.
+// A wall thinner than a voxel has both faces in the same voxels, whose normals then cancel: such a cell
+// gathers both sides of the axis along which its neighbours are emptiest (the wall's normal for walls
+// along the grid axes, within 45 degrees otherwise), so that pixels on either face find their light.
 #include "common/ConeMath.glsl"
 
 #define MAX_CONES 32
@@ -13,12 +15,30 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
-layout(rgba16f, binding = 0) writeonly uniform image3D uIrradiance;
-layout(rgba16f, binding = 1) writeonly uniform image3D uCellNormal; // xyz: mean unit normal, w: 1 = valid
+layout(rgba16f, binding = 0) writeonly uniform image3D uIrradiance;     // along the cell normal
+layout(rgba16f, binding = 1) writeonly uniform image3D uIrradianceBack; // against it, two-sided cells only
+// xyz: the cell's unit normal; w: 0 = no surface, 1 = one-sided, 2 = two-sided (uIrradianceBack is valid)
+layout(rgba16f, binding = 2) writeonly uniform image3D uCellNormal;
 
 uniform int uResolution; // voxels per side
 uniform int uCellSize;   // voxels per cell side
 uniform float uConeOffset; // metres along the normal
+
+const vec4 kNone = vec4(0.0, 0.0, 0.0, -1.0);
+
+// The share of occupied voxels in the cell `offset` cells away; 1 outside the grid (nothing to gather there).
+float cellOccupancy(ivec3 cell, ivec3 offset)
+{
+    ivec3 first = (cell + offset) * uCellSize;
+    if (any(lessThan(first, ivec3(0))) || any(greaterThanEqual(first, ivec3(uResolution))))
+        return 1.0;
+    float occupied = 0.0;
+    for (int z = 0; z < uCellSize; ++z)
+        for (int y = 0; y < uCellSize; ++y)
+            for (int x = 0; x < uCellSize; ++x)
+                occupied += texelFetch(uAlbedo, first + ivec3(x, y, z), 0).a > 0.0 ? 1.0 : 0.0;
+    return occupied / float(uCellSize * uCellSize * uCellSize);
+}
 
 void main()
 {
@@ -28,7 +48,7 @@ void main()
         return;
     vec3 normalSum = vec3(0.0);
     vec3 positionSum = vec3(0.0);
-    float count = 0.0;
+    float occupied = 0.0;
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x) {
@@ -36,22 +56,38 @@ void main()
                 if (texelFetch(uAlbedo, voxel, 0).a <= 0.0)
                     continue;
                 vec3 n = texelFetch(uNormal, voxel, 0).xyz;
-                // Voxels whose faces cancel (a two-sided sliver) say nothing about which way the surface faces.
-                if (dot(n, n) < 0.25)
-                    continue;
-                normalSum += normalize(n);
+                // A voxel whose faces cancel adds (almost) nothing to the direction, but still counts.
+                normalSum += dot(n, n) > 1e-8 ? normalize(n) * min(length(n), 1.0) : vec3(0.0);
                 positionSum += vec3(voxel) + 0.5;
-                count += 1.0;
+                occupied += 1.0;
             }
-    float normalLength = length(normalSum);
-    // Faces that disagree (a corner, both sides of a wall) average to a short normal: no single surface.
-    if (count == 0.0 || normalLength < 0.5 * count) {
-        imageStore(uIrradiance, cell, vec4(0.0, 0.0, 0.0, -1.0));
+    if (occupied == 0.0) {
+        imageStore(uIrradiance, cell, kNone);
+        imageStore(uIrradianceBack, cell, kNone);
         imageStore(uCellNormal, cell, vec4(0.0));
         return;
     }
-    vec3 n = normalSum / normalLength;
-    vec3 origin = uGridOrigin + positionSum / count * uVoxelSize + n * uConeOffset;
-    imageStore(uIrradiance, cell, gatherDiffuse(origin, n));
-    imageStore(uCellNormal, cell, vec4(n, 1.0));
+    vec3 centre = uGridOrigin + positionSum / occupied * uVoxelSize;
+    float normalLength = length(normalSum);
+    if (normalLength >= 0.5 * occupied) {
+        vec3 n = normalSum / normalLength;
+        imageStore(uIrradiance, cell, gatherDiffuse(centre + n * uConeOffset, n));
+        imageStore(uIrradianceBack, cell, kNone);
+        imageStore(uCellNormal, cell, vec4(n, 1.0));
+        return;
+    }
+    // Faces cancel: take the axis whose two neighbouring cells are emptiest, and gather both ways along it.
+    float best = 3.0;
+    vec3 n = vec3(0.0, 0.0, 1.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        ivec3 step = ivec3(axis == 0, axis == 1, axis == 2);
+        float opacity = cellOccupancy(cell, step) + cellOccupancy(cell, -step);
+        if (opacity < best) {
+            best = opacity;
+            n = vec3(step);
+        }
+    }
+    imageStore(uIrradiance, cell, gatherDiffuse(centre + n * uConeOffset, n));
+    imageStore(uIrradianceBack, cell, gatherDiffuse(centre - n * uConeOffset, -n));
+    imageStore(uCellNormal, cell, vec4(n, 2.0));
 }

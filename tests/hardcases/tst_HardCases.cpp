@@ -17,6 +17,7 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 /// The dark room may show at most this share of the lit room's radiance (docs/STABILITY.md).
 constexpr double kThinWallLeakBound = 0.03;
+constexpr double kThinWallLeakBoundCached = 0.06;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by `offset`. */
 render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
@@ -451,18 +452,26 @@ void HardCasesTest::thinWallLeak()
     add(test::quad({t, -1, 1}, {t, -1, -1}, {t, 1, -1}, {t, 1, 1}));      // divider, facing the dark room
     scene.meshes.push_back(test::makeTriangles(walls, 0));
     scene.pointLights.push_back({{-1.0f, 0.5f, 0.0f}, glm::vec3(2.0f), true});
-    render::RenderSettings settings;
-    settings.voxelResolution = 32;
-    scene.camera = {{-1.0f, 0.0f, 0.9f}, {-1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
-    const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-    expectSane(m_gl.renderer->readFrame(), 10.0f);
-    scene.camera = {{1.0f, 0.0f, 0.9f}, {1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
-    const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-    expectSane(m_gl.renderer->readFrame(), 10.0f);
-    const double leak = dark / lit;
-    qInfo("thin wall: lit room %.4f, dark room %.4f, leak %.2f%%", lit, dark, 100.0 * leak);
-    QVERIFY(lit > 0.0);
-    QVERIFY2(leak < kThinWallLeakBound, qPrintable(QString::number(leak)));
+    // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
+    // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones (measured
+    // 4.4% against 1.9%): a floor cell under the wall belongs to both rooms and gathers from one point above
+    // the wall's voxels, where pixel cones start on their own side; hence its own bound (docs/STABILITY.md).
+    for (const bool irradianceCache : {false, true}) {
+        render::RenderSettings settings;
+        settings.voxelResolution = 32;
+        settings.irradianceCache = irradianceCache;
+        scene.camera = {{-1.0f, 0.0f, 0.9f}, {-1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
+        const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+        expectSane(m_gl.renderer->readFrame(), 10.0f);
+        scene.camera = {{1.0f, 0.0f, 0.9f}, {1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
+        const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+        expectSane(m_gl.renderer->readFrame(), 10.0f);
+        const double leak = dark / lit;
+        qInfo("thin wall%s: lit room %.4f, dark room %.4f, leak %.2f%%", irradianceCache ? ", irradiance cache" : "",
+            lit, dark, 100.0 * leak);
+        QVERIFY(lit > 0.0);
+        QVERIFY2(leak < (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound), qPrintable(QString::number(leak)));
+    }
 }
 
 QTEST_GUILESS_MAIN(HardCasesTest)
