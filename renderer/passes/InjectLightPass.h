@@ -2,6 +2,7 @@
 
 #include "core/RenderPass.h"
 #include "core/VoxelRegion.h"
+#include "gl/Buffer.h"
 #include "gl/Program.h"
 
 #include <array>
@@ -9,7 +10,11 @@
 
 namespace vct::render {
 
-/** Writes level 0 of the radiance volume: shadowed direct light reflected by each voxel, plus emission. */
+/**
+ * Writes level 0 of the radiance volume: shadowed direct light reflected by each voxel, plus emission. Two
+ * dispatches: one over the region lists its occupied voxels and clears the rest, the lighting one runs over
+ * that list only (an indirect dispatch, so the count never comes back to the CPU).
+ */
 class InjectLightPass final : public RenderPass {
 public:
     const char* name() const override { return "inject light"; }
@@ -26,6 +31,9 @@ private:
     /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
     gl::Program m_program;
+    gl::Program m_listProgram;
+    gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the voxel count
+    gl::Buffer m_occupied; ///< packed voxel coordinates, 10 bits per axis
     std::array<std::uint64_t, 4> m_key{};
 };
 

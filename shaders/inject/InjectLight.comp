@@ -1,17 +1,17 @@
 // Outgoing radiance of each voxel: Lambertian reflection of the shadowed direct light plus emission,
-// stored premultiplied by opacity so that box filtering and trilinear sampling stay correct.
+// stored premultiplied by opacity so that box filtering and trilinear sampling stay correct. Runs over the
+// occupied voxels ListOccupied.comp found (empty ones it has already cleared).
 #include "common/Lights.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
 layout(binding = 2) uniform sampler3D uEmission;
 layout(rgba16f, binding = 0) writeonly uniform image3D uRadiance;
+layout(std430, binding = 0) readonly buffer Dispatch { uint uGroupsX; uint uGroupsY; uint uGroupsZ; uint uCount; };
+layout(std430, binding = 1) readonly buffer Occupied { uint uVoxels[]; };
 
-uniform int uResolution;
-uniform ivec3 uRegionOrigin; // only voxels whose light may have changed are re-injected
-uniform ivec3 uRegionSize;
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform bool uEmissionEnabled;
@@ -21,14 +21,11 @@ const float kPi = 3.14159265358979;
 
 void main()
 {
-    if (any(greaterThanEqual(ivec3(gl_GlobalInvocationID), uRegionSize)))
+    if (gl_GlobalInvocationID.x >= uCount)
         return;
-    ivec3 voxel = uRegionOrigin + ivec3(gl_GlobalInvocationID);
+    uint code = uVoxels[gl_GlobalInvocationID.x];
+    ivec3 voxel = ivec3(code & 1023u, (code >> 10) & 1023u, code >> 20);
     vec4 albedo = texelFetch(uAlbedo, voxel, 0);
-    if (albedo.a <= 0.0) {
-        imageStore(uRadiance, voxel, vec4(0.0));
-        return;
-    }
     vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
     float normalLength = length(normalSum);
     vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
