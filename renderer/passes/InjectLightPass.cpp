@@ -81,11 +81,8 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
 
 void InjectLightPass::execute(FrameContext& frame)
 {
-    if (!m_program) {
+    if (!m_program)
         m_program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"}, {}});
-        m_listProgram = frame.shaders.build({"inject light: occupied voxels", {"inject/ListOccupied.comp"}, {}});
-        m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
     const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;
@@ -93,22 +90,8 @@ void InjectLightPass::execute(FrameContext& frame)
         ++v.radianceVersion;
         return;
     }
-    const glm::ivec3 size = region.size();
-    const std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z) * sizeof(std::uint32_t);
-    if (m_occupied.size() < capacity)
-        m_occupied = gl::Buffer(capacity, nullptr, 0);
-    const std::uint32_t reset[4] = {0, 1, 1, 0};
-    m_dispatch.upload(reset, sizeof reset);
-    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    m_occupied.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    v.albedo.bindUnit(0);
-    v.radiance.bindImage(0, 0, GL_WRITE_ONLY);
-    m_listProgram.use();
-    m_listProgram.set("uRegionOrigin", region.lo);
-    m_listProgram.set("uRegionSize", size);
-    const glm::ivec3 groups = (size + 3) / 4;
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    // Empty voxels get zero radiance here; the lighting runs over the occupied ones only.
+    m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
 
     m_program.use();
     applyLightUniforms(m_program, frame.scene.scene(), frame.shadows);
@@ -119,9 +102,7 @@ void InjectLightPass::execute(FrameContext& frame)
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.emission.bindUnit(2);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, m_dispatch.id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    m_occupied.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++v.radianceVersion;
 }

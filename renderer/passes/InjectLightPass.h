@@ -2,7 +2,7 @@
 
 #include "core/RenderPass.h"
 #include "core/VoxelRegion.h"
-#include "gl/Buffer.h"
+#include "core/OccupiedCellList.h"
 #include "gl/Program.h"
 
 #include <array>
@@ -31,9 +31,7 @@ private:
     /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
     gl::Program m_program;
-    gl::Program m_listProgram;
-    gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the voxel count
-    gl::Buffer m_occupied; ///< packed voxel coordinates, 10 bits per axis
+    OccupiedCellList m_occupied;
     std::array<std::uint64_t, 4> m_key{};
 };
 

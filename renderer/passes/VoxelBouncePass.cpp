@@ -41,16 +41,16 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (!v.bounced || v.bounced.width() != res)
         v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.radiance.levels());
 
+    // Empty voxels stay dark; the gather runs over the occupied ones only.
+    m_occupied.build(frame.shaders, v.albedo, VoxelRegion::whole(res), 1, &v.bounced);
     // Gather from the first-bounce volume, not from last time's second bounce.
     ConeTracingSetup::apply(program, frame, anisotropic, false);
-    program.set("uResolution", res);
     program.set("uAoEnabled", 0);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.bounced.bindImage(0, 0, GL_WRITE_ONLY);
     program.use();
-    const GLuint groups = GLuint((res + 3) / 4);
-    glDispatchCompute(groups, groups, groups);
+    m_occupied.dispatchOverCells();
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     m_builder.buildBox(frame.shaders, v.bounced, res);

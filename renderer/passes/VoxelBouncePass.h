@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "gl/Program.h"
 #include "passes/VoxelMipBuilder.h"
@@ -30,6 +31,7 @@ private:
     gl::Program m_program;
     gl::Program m_anisotropicProgram;
     VoxelMipBuilder m_builder;
+    OccupiedCellList m_occupied;
     std::uint64_t m_radianceVersion = 0;
     GatherKey m_key{};
 };

@@ -49,11 +49,17 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
     if (!v.irradiance || v.irradiance.width() != cells) {
+        // Cleared once: the gather writes only cells that hold voxels, and lookups read a cell's irradiance only
+        // where its normal says it was gathered, but every texel must be finite for the NaN/Inf check.
+        const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
         for (gl::Texture* t : {&v.irradiance, &v.irradianceBack, &v.irradianceNormal}) {
             *t = gl::Texture::create3D(GL_RGBA16F, cells);
             t->setFilter(GL_NEAREST, GL_NEAREST);
+            glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, none);
         }
     }
+    // Cells without voxels get "no surface" (w = 0) in the normals; the gather runs over the others only.
+    m_occupied.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize, &v.irradianceNormal, glm::vec4(0.0f));
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
     ConeTracingSetup::apply(program, frame, anisotropic, true);
     program.set("uResolution", res);
@@ -66,8 +72,7 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     v.irradianceBack.bindImage(1, 0, GL_WRITE_ONLY);
     v.irradianceNormal.bindImage(2, 0, GL_WRITE_ONLY);
     program.use();
-    const GLuint groups = GLuint((cells + 3) / 4);
-    glDispatchCompute(groups, groups, groups);
+    m_occupied.dispatchOverCells();
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);

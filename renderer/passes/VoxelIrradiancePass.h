@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "gl/Program.h"
 
@@ -34,6 +35,7 @@ private:
     using GatherKey = std::tuple<bool, int, int, float, float, float, float, int, bool, int>;
     static GatherKey keyOf(const FrameContext& frame);
     gl::Program m_programs[2]; ///< [0] box-filtered mips, [1] anisotropic
+    OccupiedCellList m_occupied;
     std::uint64_t m_radianceVersion = 0;
     GatherKey m_key{};
 };

@@ -8,19 +8,21 @@
 #define MAX_CONES 32
 #include "common/ConeTracing.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+// Runs over the occupied voxels (core/OccupiedCellList); the list pass cleared the others to zero.
+#include "common/OccupiedCells.glsl"
+
+layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
 layout(rgba16f, binding = 0) writeonly uniform image3D uBounced;
 
-uniform int uResolution;
 uniform float uConeOffset; // metres along the normal
 
 void main()
 {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, ivec3(uResolution))))
+    ivec3 voxel;
+    if (!occupiedCell(voxel))
         return;
     vec4 albedo = texelFetch(uAlbedo, voxel, 0);
     vec4 first = texelFetch(uRadiance, voxel, 0); // premultiplied by opacity

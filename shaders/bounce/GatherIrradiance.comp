@@ -11,7 +11,10 @@
 #define MAX_CONES 32
 #include "common/ConeTracing.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+// Runs over the cells that hold any voxel (core/OccupiedCellList); the list pass marked the others empty.
+#include "common/OccupiedCells.glsl"
+
+layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
@@ -42,9 +45,8 @@ float cellOccupancy(ivec3 cell, ivec3 offset)
 
 void main()
 {
-    ivec3 cell = ivec3(gl_GlobalInvocationID);
-    int cells = uResolution / uCellSize;
-    if (any(greaterThanEqual(cell, ivec3(cells))))
+    ivec3 cell;
+    if (!occupiedCell(cell))
         return;
     vec3 normalSum = vec3(0.0);
     vec3 positionSum = vec3(0.0);

@@ -1,7 +1,9 @@
 // Outgoing radiance of each voxel: Lambertian reflection of the shadowed direct light plus emission,
 // stored premultiplied by opacity so that box filtering and trilinear sampling stay correct. Runs over the
-// occupied voxels ListOccupied.comp found (empty ones it has already cleared).
+// occupied voxels common/ListOccupied.comp found (it has already cleared the empty ones).
 #include "common/Lights.glsl"
+
+#include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -9,8 +11,6 @@ layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
 layout(binding = 2) uniform sampler3D uEmission;
 layout(rgba16f, binding = 0) writeonly uniform image3D uRadiance;
-layout(std430, binding = 0) readonly buffer Dispatch { uint uGroupsX; uint uGroupsY; uint uGroupsZ; uint uCount; };
-layout(std430, binding = 1) readonly buffer Occupied { uint uVoxels[]; };
 
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
@@ -21,10 +21,9 @@ const float kPi = 3.14159265358979;
 
 void main()
 {
-    if (gl_GlobalInvocationID.x >= uCount)
+    ivec3 voxel;
+    if (!occupiedCell(voxel))
         return;
-    uint code = uVoxels[gl_GlobalInvocationID.x];
-    ivec3 voxel = ivec3(code & 1023u, (code >> 10) & 1023u, code >> 20);
     vec4 albedo = texelFetch(uAlbedo, voxel, 0);
     vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
     float normalLength = length(normalSum);

@@ -1,0 +1,50 @@
+#include "core/OccupiedCellList.h"
+
+#include "core/ShaderLibrary.h"
+
+#include <cstdint>
+
+namespace vct::render {
+
+void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region,
+    int cellSize, const gl::Texture* clearTarget, glm::vec4 clearValue)
+{
+    if (!m_program) {
+        m_program = shaders.build({"occupied cells", {"common/ListOccupied.comp"}, {}});
+        m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const glm::ivec3 size = region.size();
+    const std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z) * sizeof(std::uint32_t);
+    if (m_cells.size() < capacity)
+        m_cells = gl::Buffer(capacity, nullptr, 0);
+    const std::uint32_t reset[4] = {0, 1, 1, 0};
+    m_dispatch.upload(reset, sizeof reset);
+    if (region.isEmpty())
+        return;
+    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    albedo.bindUnit(0);
+    if (clearTarget)
+        clearTarget->bindImage(0, 0, GL_WRITE_ONLY);
+    m_program.use();
+    m_program.set("uRegionOrigin", region.lo);
+    m_program.set("uRegionSize", size);
+    m_program.set("uCellSize", cellSize);
+    m_program.set("uClear", clearTarget ? 1 : 0);
+    m_program.set("uClearValue", clearValue);
+    m_program.set("uGroupSize", kGroupSize);
+    const glm::ivec3 groups = (size + 3) / 4;
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void OccupiedCellList::dispatchOverCells() const
+{
+    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, m_dispatch.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
+} // namespace vct::render

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/VoxelRegion.h"
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+
+#include <glm/vec4.hpp>
+
+namespace vct::render {
+
+class ShaderLibrary;
+
+/**
+ * The cells of a region that hold a surface, listed on the GPU (common/ListOccupied.comp) for a heavy compute
+ * pass to run over with an indirect dispatch, so the count never comes back to the CPU. On llvmpipe a shader
+ * holding lighting or cone code is several times slower per invocation even where it returns early, and most
+ * of a voxel grid is empty; the heavy shader includes common/OccupiedCells.glsl and has local_size_x = 64.
+ */
+class OccupiedCellList {
+public:
+    static constexpr unsigned kGroupSize = 64;
+
+    /**
+     * Lists the cells of @p cellSize^3 voxels in @p region (in cells) whose voxels have opacity in @p albedo.
+     * With @p clearTarget, writes @p clearValue at level 0 of it for each empty cell.
+     */
+    void build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region, int cellSize,
+        const gl::Texture* clearTarget = nullptr, glm::vec4 clearValue = glm::vec4(0.0f));
+    /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells. */
+    void dispatchOverCells() const;
+
+private:
+    gl::Program m_program;
+    gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the count
+    gl::Buffer m_cells;    ///< packed cell coordinates, 10 bits per axis
+};
+
+} // namespace vct::render
