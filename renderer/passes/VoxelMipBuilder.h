@@ -28,6 +28,7 @@ public:
 private:
     gl::Program m_boxProgram;
     gl::Program m_directionalProgram;
+    gl::Program m_allDirectionsProgram;
 };
 
 } // namespace vct::render
