@@ -9,10 +9,22 @@ namespace vct::render {
 void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region,
     int cellSize, const gl::Texture* clearTarget, glm::vec4 clearValue)
 {
-    if (!m_program) {
+    if (!m_program)
         m_program = shaders.build({"occupied cells", {"common/ListOccupied.comp"}, {}});
-        m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (clearTarget && !region.isEmpty()) {
+        const glm::ivec3 lo = region.lo, size = region.size();
+        glClearTexSubImage(clearTarget->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, &clearValue[0]);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
+    albedo.bindUnit(0);
+    m_program.set("uCellSize", cellSize);
+    buildWith(m_program, region);
+}
+
+void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& region)
+{
+    if (!m_dispatch)
+        m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     const glm::ivec3 size = region.size();
     const std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z) * sizeof(std::uint32_t);
     if (m_cells.size() < capacity)
@@ -23,19 +35,13 @@ void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& al
         return;
     m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    albedo.bindUnit(0);
-    if (clearTarget)
-        clearTarget->bindImage(0, 0, GL_WRITE_ONLY);
-    m_program.use();
-    m_program.set("uRegionOrigin", region.lo);
-    m_program.set("uRegionSize", size);
-    m_program.set("uCellSize", cellSize);
-    m_program.set("uClear", clearTarget ? 1 : 0);
-    m_program.set("uClearValue", clearValue);
-    m_program.set("uGroupSize", kGroupSize);
+    lister.use();
+    lister.set("uRegionOrigin", region.lo);
+    lister.set("uRegionSize", size);
+    lister.set("uGroupSize", kGroupSize);
     const glm::ivec3 groups = (size + 3) / 4;
     glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 void OccupiedCellList::dispatchOverCells() const

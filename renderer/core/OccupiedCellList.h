@@ -23,10 +23,16 @@ public:
 
     /**
      * Lists the cells of @p cellSize^3 voxels in @p region (in cells) whose voxels have opacity in @p albedo.
-     * With @p clearTarget, writes @p clearValue at level 0 of it for each empty cell.
+     * With @p clearTarget, first clears the region of its level 0 to @p clearValue (one texel per cell): the heavy
+     * pass then writes the listed cells only. A clear costs far less on llvmpipe than a shader's stores.
      */
     void build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region, int cellSize,
         const gl::Texture* clearTarget = nullptr, glm::vec4 clearValue = glm::vec4(0.0f));
+    /**
+     * Lists with a pass of the caller's: @p lister (local size 4^3, including common/AppendCell.glsl, its other
+     * uniforms and bindings already set) runs over @p region and calls appendCell() for the cells to list.
+     */
+    void buildWith(const gl::Program& lister, const VoxelRegion& region);
     /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells. */
     void dispatchOverCells() const;
 

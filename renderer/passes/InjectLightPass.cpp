@@ -90,7 +90,7 @@ void InjectLightPass::execute(FrameContext& frame)
         ++v.radianceVersion;
         return;
     }
-    // Empty voxels get zero radiance here; the lighting runs over the occupied ones only.
+    // The region is cleared to zero radiance; the lighting then writes the occupied voxels only.
     m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
 
     m_program.use();
@@ -102,6 +102,7 @@ void InjectLightPass::execute(FrameContext& frame)
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.emission.bindUnit(2);
+    v.radiance.bindImage(0, 0, GL_WRITE_ONLY);
     m_occupied.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++v.radianceVersion;

@@ -6,12 +6,6 @@ namespace vct::render {
 
 namespace {
 
-void dispatchOver(const VoxelRegion& region)
-{
-    const glm::ivec3 groups = (region.size() + 3) / 4;
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-}
-
 // Margin around a moving object's bounds: conservative enlargement and depth spread reach one voxel out.
 constexpr int kDynamicMargin = 2;
 
@@ -36,6 +30,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
         m_voxelize = frame.shaders.build(
             {"voxelize", {"voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag"}, {}});
         m_resolve = frame.shaders.build({"voxel resolve", {"voxelize/Resolve.comp"}, {}});
+        m_listResolve = frame.shaders.build({"voxel resolve: touched voxels", {"voxelize/ListResolve.comp"}, {}});
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -95,11 +90,6 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
 void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
 {
     VoxelVolume& v = frame.voxels;
-    m_resolve.use();
-    m_resolve.set("uResolution", v.frame.resolution);
-    m_resolve.set("uMergeStatic", mergeStatic ? 1 : 0);
-    m_resolve.set("uRegionOrigin", region.lo);
-    m_resolve.set("uRegionSize", region.size());
     v.accumulators.bindImage(0, 0, GL_READ_ONLY);
     (intoStaticLayer ? v.staticAlbedo : v.albedo).bindImage(1, 0, GL_WRITE_ONLY);
     (intoStaticLayer ? v.staticNormal : v.normal).bindImage(2, 0, GL_WRITE_ONLY);
@@ -107,7 +97,28 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
     v.staticAlbedo.bindUnit(0);
     v.staticNormal.bindUnit(1);
     v.staticEmission.bindUnit(2);
-    dispatchOver(region);
+    // Untouched voxels take the static layer's values (merging) or none: a copy or a clear of the region, far
+    // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are listed and
+    // averaged.
+    const glm::ivec3 lo = region.lo, size = region.size();
+    const gl::Texture* outputs[3] = {intoStaticLayer ? &v.staticAlbedo : &v.albedo,
+        intoStaticLayer ? &v.staticNormal : &v.normal, intoStaticLayer ? &v.staticEmission : &v.emission};
+    const gl::Texture* statics[3] = {&v.staticAlbedo, &v.staticNormal, &v.staticEmission};
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int i = 0; i < 3; ++i) {
+        if (mergeStatic)
+            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(), GL_TEXTURE_3D, 0,
+                lo.x, lo.y, lo.z, size.x, size.y, size.z);
+        else
+            glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    m_listResolve.set("uResolution", v.frame.resolution);
+    m_listResolve.set("uMergeStatic", mergeStatic ? 1 : 0);
+    m_touched.buildWith(m_listResolve, region);
+    m_resolve.use();
+    m_resolve.set("uResolution", v.frame.resolution);
+    m_touched.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

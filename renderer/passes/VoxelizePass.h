@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "core/VoxelRegion.h"
 #include "gl/Framebuffer.h"
@@ -29,6 +30,8 @@ private:
 
     gl::Program m_voxelize;
     gl::Program m_resolve;
+    gl::Program m_listResolve;
+    OccupiedCellList m_touched; ///< voxels the last accumulation reached, for the averaging pass
     gl::Framebuffer m_framebuffer;
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;
