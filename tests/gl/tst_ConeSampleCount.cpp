@@ -55,6 +55,7 @@ void ConeSampleCountTest::countMatchesTheConeLoop()
     const render::Camera camera { { 0.0f, 6.0f, 0.0f }, { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, -1.0f }, 40.0f,
         0.01f };
     render::RenderSettings settings;
+    settings.irradianceCache = false; // every traced pixel runs the cone loop this test counts
     settings.voxelResolution = 32;
     settings.diffuseConeCount = 1;
     settings.indirectSpecular = false;

@@ -298,6 +298,7 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
     settings.voxelResolution = 32;
     settings.shadowMapSize = 256;
     settings.indirectDivisor = 1;
+    settings.irradianceCache = false;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(m_scene);
     planned();

@@ -287,7 +287,8 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 {
     render::RenderSettings settings;
     settings.voxelResolution = 32;
-    settings.anisotropicMips = false; // the figures below are for one box-filtered chain
+    settings.anisotropicMips = false; // the figures below are for one box-filtered chain, without the cache
+    settings.irradianceCache = false;
     const std::string problem = settings.set("voxel_res", "512");
     QVERIFY2(problem.find("voxel_res=512 needs 12.1 GiB") != std::string::npos, problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
