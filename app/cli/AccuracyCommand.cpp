@@ -560,13 +560,8 @@ int AccuracyCommand::run(int argc, char** argv)
             if (k < vctJobs) {
                 if (!renderer) {
                     std::string contextError;
-                    context
-                        = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
-                    if (!context && !parser.isSet(glOption)) {
-                        std::string osmesaError;
-                        context = render::HeadlessContext::create("osmesa", osmesaError);
-                        contextError += "; then " + osmesaError;
-                    }
+                    context = render::HeadlessContext::createPreferring(
+                        parser.value(glOption).toStdString(), parser.isSet(glOption), contextError);
                     if (!context)
                         return fail(2, QString::fromStdString(contextError));
                     renderer = std::make_unique<render::Renderer>(context->procAddressFunction());

@@ -53,7 +53,7 @@ int BenchCommand::run(int argc, char** argv)
     const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Timed frames per sequence and mode (default 5)."), QStringLiteral("N"), QStringLiteral("5"));
     const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable (see vct-render --help)."), QStringLiteral("key=value"));
     const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Also write the Markdown tables to this file."), QStringLiteral("FILE.md"));
-    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     parser.addOptions({widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption});
     parser.process(app);
 
@@ -79,7 +79,8 @@ int BenchCommand::run(int argc, char** argv)
         return fail(1, problem);
 
     std::string contextError;
-    auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
+    auto context = render::HeadlessContext::createPreferring(
+        parser.value(glOption).toStdString(), parser.isSet(glOption), contextError);
     if (!context)
         return fail(2, QString::fromStdString(contextError));
     std::string report;

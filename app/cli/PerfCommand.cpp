@@ -121,7 +121,7 @@ int PerfCommand::run(int argc, char** argv)
         QStringLiteral("Directory for the CSV, Markdown and chart files (default perf-results)."),
         QStringLiteral("DIR"), QStringLiteral("perf-results"));
     const QCommandLineOption glOption(QStringLiteral("gl"),
-        QStringLiteral("Headless GL backend: egl (default) or osmesa."), QStringLiteral("egl|osmesa"),
+        QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"),
         QStringLiteral("egl"));
     parser.addOptions({ sizesOption, gridsOption, trianglesOption, baseSizeOption, baseGridOption,
         framesOption, setOption, outOption, glOption });
@@ -173,7 +173,8 @@ int PerfCommand::run(int argc, char** argv)
         return fail(3, QStringLiteral("cannot create '%1'").arg(outDir));
 
     std::string contextError;
-    auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
+    auto context = render::HeadlessContext::createPreferring(
+        parser.value(glOption).toStdString(), parser.isSet(glOption), contextError);
     if (!context)
         return fail(2, QString::fromStdString(contextError));
     std::vector<PerfResult> results;

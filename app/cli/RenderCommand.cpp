@@ -225,13 +225,8 @@ int RenderCommand::run(int argc, char** argv)
             return fail(1, QStringLiteral("--%1 needs --reference").arg(referenceOnly->names().front()));
 
     std::string contextError;
-    auto context = render::HeadlessContext::create(parser.value(glOption).toStdString(), contextError);
-    if (!context && !parser.isSet(glOption)) {
-        // OSMesa is the second choice; a machine without EGL's surfaceless platform may still have it.
-        std::string osmesaError;
-        context = render::HeadlessContext::create("osmesa", osmesaError);
-        contextError += "; then " + osmesaError;
-    }
+    auto context = render::HeadlessContext::createPreferring(
+        parser.value(glOption).toStdString(), parser.isSet(glOption), contextError);
     if (!context)
         return fail(2, QString::fromStdString(contextError));
 

@@ -43,4 +43,16 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const std::string& back
     return context;
 }
 
+std::unique_ptr<HeadlessContext> HeadlessContext::createPreferring(const std::string& backend, bool chosen, std::string& error)
+{
+    auto context = create(backend, error);
+    if (context || chosen)
+        return context;
+    std::string osmesaError;
+    context = create("osmesa", osmesaError);
+    if (!context)
+        error += "; then " + osmesaError;
+    return context;
+}
+
 } // namespace vct::render

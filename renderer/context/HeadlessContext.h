@@ -22,6 +22,12 @@ public:
      * through glad. On failure returns null and sets error to a message naming what was tried.
      */
     static std::unique_ptr<HeadlessContext> create(const std::string& backend, std::string& error);
+    /**
+     * The command lines' choice: @p backend when the user named one (@p chosen), else EGL with OSMesa as the
+     * second choice, since a machine without EGL's surfaceless platform may still have OSMesa. The error then
+     * names both attempts.
+     */
+    static std::unique_ptr<HeadlessContext> createPreferring(const std::string& backend, bool chosen, std::string& error);
 
 private:
     std::string m_glInfo;
