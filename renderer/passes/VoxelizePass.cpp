@@ -90,13 +90,6 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
 void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
 {
     VoxelVolume& v = frame.voxels;
-    v.accumulators.bindImage(0, 0, GL_READ_ONLY);
-    (intoStaticLayer ? v.staticAlbedo : v.albedo).bindImage(1, 0, GL_WRITE_ONLY);
-    (intoStaticLayer ? v.staticNormal : v.normal).bindImage(2, 0, GL_WRITE_ONLY);
-    (intoStaticLayer ? v.staticEmission : v.emission).bindImage(3, 0, GL_WRITE_ONLY);
-    v.staticAlbedo.bindUnit(0);
-    v.staticNormal.bindUnit(1);
-    v.staticEmission.bindUnit(2);
     // Untouched voxels take the static layer's values (merging) or none: a copy or a clear of the region, far
     // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are listed and
     // averaged.
@@ -113,9 +106,11 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
             glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    v.accumulators.bindImage(0, 0, GL_READ_ONLY);
     m_listResolve.set("uResolution", v.frame.resolution);
-    m_listResolve.set("uMergeStatic", mergeStatic ? 1 : 0);
     m_touched.buildWith(m_listResolve, region);
+    for (int i = 0; i < 3; ++i)
+        outputs[i]->bindImage(GLuint(1 + i), 0, GL_WRITE_ONLY);
     m_resolve.use();
     m_resolve.set("uResolution", v.frame.resolution);
     m_touched.dispatchOverCells();
