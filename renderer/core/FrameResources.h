@@ -52,13 +52,15 @@ struct VoxelVolume {
     const std::array<gl::Texture, 6>& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
 };
 
-/** Shadow maps of all lights: point lights as cube layers of linear distance, directional lights as 2D layers. */
+/** Shadow maps of all lights: point lights as cube layers, directional lights as 2D layers, both plain rasterised
+ *  depth. Nothing writes gl_FragDepth, so llvmpipe keeps its early depth test and skips hidden fragments. */
 struct ShadowMaps {
-    gl::Texture pointDepth;       ///< depth32f cube map array, value = distance / far.
+    gl::Texture pointDepth;       ///< depth32f cube map array: each face's perspective depth over [pointNear, pointFar].
     gl::Texture directionalDepth; ///< depth32f 2D array.
     gl::Framebuffer framebuffer;
     int size = 0;
-    float pointFar = 1.0f; ///< metres: the distance that maps to 1 in pointDepth
+    float pointNear = 1e-4f; ///< metres: the cube faces' near plane (depth 0)
+    float pointFar = 1.0f;   ///< metres: the cube faces' far plane (depth 1)
     std::vector<glm::mat4> directionalMatrices; ///< world to light clip space, one per directional light
     std::uint64_t version = 0; ///< Grows each time the maps are redrawn.
 };

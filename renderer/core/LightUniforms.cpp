@@ -28,6 +28,7 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     program.set("uPointLightCount", points);
     program.set("uPointLightPosition", positions);
     program.set("uPointLightIntensity", intensities);
+    program.set("uPointShadowNear", shadows.pointNear);
     program.set("uPointShadowFar", shadows.pointFar);
     program.set("uDirectionalLightCount", directionals);
     program.set("uDirectionalLightDirection", directions);

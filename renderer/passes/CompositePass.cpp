@@ -4,29 +4,49 @@
 #include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
+#include <algorithm>
+
 namespace vct::render {
+
+std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame)
+{
+    const RenderSettings& settings = frame.settings;
+    const Scene& scene = frame.scene.scene();
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    std::vector<std::string> defines{"POINT_LIGHT_COUNT " + std::to_string(points),
+        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals), "VIEW " + std::to_string(int(settings.view))};
+    if (settings.direct && points + directionals > 0)
+        defines.emplace_back("DIRECT");
+    // The indirect targets hold this frame's light only when the cone pass ran for them.
+    if (settings.indirectDiffuse && FrameRules::diffuseConesNeeded(frame))
+        defines.emplace_back("INDIRECT_DIFFUSE");
+    if (FrameRules::specularConesNeeded(frame))
+        defines.emplace_back("INDIRECT_SPECULAR");
+    if (FrameRules::ambientOcclusionNeeded(frame))
+        defines.emplace_back("AO_AVAILABLE");
+    if (FrameRules::emissionNeeded(frame))
+        defines.emplace_back("EMISSION");
+    if (frame.screen.indirectDivisor > 1)
+        defines.emplace_back("UPSAMPLE");
+    return defines;
+}
 
 void CompositePass::execute(FrameContext& frame)
 {
-    if (!m_program) {
-        m_program = frame.shaders.build({"composite", {"common/FullScreen.vert", "composite/Composite.frag"}, {}});
+    if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
-    }
-    const RenderSettings& settings = frame.settings;
+    std::vector<std::string> defines = variantDefines(frame);
+    gl::Program& program = m_programs[defines];
+    if (!program)
+        program = frame.shaders.build({"composite", {"common/FullScreen.vert", "composite/Composite.frag"}, std::move(defines)});
     ScreenTargets& s = frame.screen;
-    m_program.use();
-    applyLightUniforms(m_program, frame.scene.scene(), frame.shadows);
-    m_program.set("uCameraPosition", frame.camera.position);
-    m_program.set("uDirectEnabled", settings.direct ? 1 : 0);
-    // The indirect targets hold this frame's light only when the cone pass ran for them.
-    m_program.set("uIndirectDiffuseEnabled", settings.indirectDiffuse && FrameRules::diffuseConesNeeded(frame) ? 1 : 0);
-    m_program.set("uIndirectSpecularEnabled", FrameRules::specularConesNeeded(frame) ? 1 : 0);
-    m_program.set("uAoAvailable", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
-    m_program.set("uEmissionEnabled", settings.emission ? 1 : 0);
-    m_program.set("uView", int(settings.view));
-    m_program.set("uDivisor", s.indirectDivisor);
+    program.use();
+    applyLightUniforms(program, frame.scene.scene(), frame.shadows);
+    program.set("uCameraPosition", frame.camera.position);
+    program.set("uDivisor", s.indirectDivisor);
     // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
-    m_program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
+    program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
     s.albedo.bindUnit(2);

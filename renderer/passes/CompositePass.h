@@ -4,6 +4,10 @@
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
 
+#include <map>
+#include <string>
+#include <vector>
+
 namespace vct::render {
 
 /** Sums emission, shadowed direct light and the indirect terms into the frame's linear radiance. */
@@ -19,7 +23,10 @@ public:
     void invalidate() override {}
 
 private:
-    gl::Program m_program;
+    /** The compile-time shape of this frame's composite (shaders/composite/Composite.frag). */
+    static std::vector<std::string> variantDefines(const FrameContext& frame);
+
+    std::map<std::vector<std::string>, gl::Program> m_programs; // built on first use of each frame shape
     gl::VertexArray m_emptyVao;
 };
 

@@ -75,14 +75,9 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
     // Standard cube-map face orientation, so texture(samplerCubeArray, direction) finds the right texel.
     static const glm::vec3 kFaceDirection[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    // Relative to the far plane only: an absolute floor would clip most of a scene measured in 1e-4 units.
-    const float nearPlane = shadows.pointFar * 1e-4f;
-    const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, nearPlane, shadows.pointFar);
-    m_program.set("uLinearDistance", 1);
-    m_program.set("uFar", shadows.pointFar);
+    const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, shadows.pointNear, shadows.pointFar);
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
-        m_program.set("uLightPosition", light.position);
         for (int face = 0; face < 6; ++face) {
             shadows.framebuffer.attachDepthLayer(point, 6 * i + face);
             shadows.framebuffer.finish(0);
@@ -95,7 +90,6 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
             frame.scene.draw(m_program, filter, 0);
         }
     }
-    m_program.set("uLinearDistance", 0);
     for (int i = 0; i < directionals; ++i) {
         shadows.framebuffer.attachDepthLayer(directional, i);
         shadows.framebuffer.finish(0);
@@ -134,6 +128,8 @@ void ShadowMapPass::execute(FrameContext& frame)
     for (int i = 0; i < points; ++i)
         shadows.pointFar = std::max(shadows.pointFar, glm::length(scene.pointLights[std::size_t(i)].position - bounds.center()) + radius);
     shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-20f);
+    // Relative to the far plane only: an absolute floor would clip most of a scene measured in 1e-4 units.
+    shadows.pointNear = shadows.pointFar * 1e-4f;
     shadows.directionalMatrices.clear();
     for (int i = 0; i < directionals; ++i) {
         const glm::vec3 dir = glm::normalize(scene.directionalLights[std::size_t(i)].direction);

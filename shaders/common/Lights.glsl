@@ -5,11 +5,21 @@
 #define POINT_SHADOW_UNIT 8
 #define DIRECTIONAL_SHADOW_UNIT 9
 
+#ifdef POINT_LIGHT_COUNT
+// Compile-time counts (CompositePass variants): llvmpipe then unrolls the light loop and drops the code of a
+// light kind the scene does not have, instead of running a data-dependent loop in every pixel.
+#define kPointLightCount POINT_LIGHT_COUNT
+#define kDirectionalLightCount DIRECTIONAL_LIGHT_COUNT
+#else
 uniform int uPointLightCount;
+uniform int uDirectionalLightCount;
+#define kPointLightCount uPointLightCount
+#define kDirectionalLightCount uDirectionalLightCount
+#endif
 uniform vec4 uPointLightPosition[MAX_POINT_LIGHTS];  // w = 1 when it casts shadows
 uniform vec4 uPointLightIntensity[MAX_POINT_LIGHTS];
+uniform float uPointShadowNear;
 uniform float uPointShadowFar;
-uniform int uDirectionalLightCount;
 uniform vec4 uDirectionalLightDirection[MAX_DIRECTIONAL_LIGHTS]; // travel direction, w = shadows
 uniform vec4 uDirectionalLightIrradiance[MAX_DIRECTIONAL_LIGHTS];
 uniform mat4 uDirectionalLightMatrix[MAX_DIRECTIONAL_LIGHTS];
@@ -22,9 +32,15 @@ float pointLightVisibility(int i, vec3 p)
     if (uPointLightPosition[i].w < 0.5)
         return 1.0;
     vec3 fromLight = p - uPointLightPosition[i].xyz;
-    float dist = length(fromLight);
-    float stored = texture(uPointShadow, vec4(fromLight, float(i))).r * uPointShadowFar;
-    return dist <= stored + 1e-3 * uPointShadowFar ? 1.0 : 0.0;
+    // The face that holds this direction is the one of its largest component; its view depth is that
+    // component, and the stored window depth inverts to it through the face's perspective projection.
+    vec3 a = abs(fromLight);
+    float viewDepth = max(a.x, max(a.y, a.z));
+    float depth = texture(uPointShadow, vec4(fromLight, float(i))).r;
+    float n = uPointShadowNear;
+    float f = uPointShadowFar;
+    float stored = n * f / (f - depth * (f - n));
+    return viewDepth <= stored + 1e-3 * f ? 1.0 : 0.0;
 }
 
 float directionalLightVisibility(int i, vec3 p)
@@ -42,23 +58,23 @@ float directionalLightVisibility(int i, vec3 p)
 // Lights are indexed point lights first, then directional ones.
 int lightCount()
 {
-    return uPointLightCount + uDirectionalLightCount;
+    return kPointLightCount + kDirectionalLightCount;
 }
 
 vec3 lightDirection(int index, vec3 p)
 {
-    if (index < uPointLightCount)
+    if (index < kPointLightCount)
         return normalize(uPointLightPosition[index].xyz - p);
-    return -normalize(uDirectionalLightDirection[index - uPointLightCount].xyz);
+    return -normalize(uDirectionalLightDirection[index - kPointLightCount].xyz);
 }
 
 // Irradiance light `index` delivers at p on a surface facing it, with its shadow tested at shadowPoint.
 vec3 lightIrradiance(int index, vec3 p, vec3 shadowPoint)
 {
-    if (index < uPointLightCount) {
+    if (index < kPointLightCount) {
         vec3 d = uPointLightPosition[index].xyz - p;
         return uPointLightIntensity[index].rgb / max(dot(d, d), 1e-8) * pointLightVisibility(index, shadowPoint);
     }
-    int i = index - uPointLightCount;
+    int i = index - kPointLightCount;
     return uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, shadowPoint);
 }

@@ -1,5 +1,15 @@
 // The frame's linear radiance: emission + shadowed direct light + albedo * indirect diffuse
 // + specular * indirect specular. Tone mapping happens later, only for 8-bit output.
+//
+// A compile-time variant per frame shape (passes/CompositePass): light counts, which terms are on, the debug
+// view and whether the indirect light needs upsampling are defines, not uniforms, so each frame's shader
+// carries only the code that frame uses (llvmpipe pays for code behind a uniform branch; see
+// common/ConeTracing.glsl on the anisotropic variant).
+//   POINT_LIGHT_COUNT, DIRECTIONAL_LIGHT_COUNT  analytic lights (common/Lights.glsl)
+//   DIRECT, INDIRECT_DIFFUSE, INDIRECT_SPECULAR, EMISSION  the terms present this frame
+//   UPSAMPLE  the indirect targets are 1/uDivisor of the screen per axis
+//   VIEW      RenderSettings::view (0 = the final image)
+//   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
 
 layout(binding = 0) uniform sampler2D gPosition;
@@ -11,36 +21,31 @@ layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular;
 
 uniform vec3 uCameraPosition;
-uniform bool uDirectEnabled;
-uniform bool uIndirectDiffuseEnabled;
-uniform bool uIndirectSpecularEnabled;
-uniform bool uEmissionEnabled;
-uniform bool uAoAvailable; // the cone pass computed ambient occlusion this frame
-uniform int uView; // RenderSettings::view
 uniform float uShadowOffset; // metres along the normal for shadow lookups
-uniform int uDivisor;        // the indirect targets are 1/uDivisor of the screen per axis
+uniform int uDivisor;
 
+#if defined(INDIRECT_DIFFUSE) || defined(INDIRECT_SPECULAR) || VIEW == 4
+#define NEEDS_INDIRECT
+#endif
+
+#ifdef NEEDS_INDIRECT
+#ifdef UPSAMPLE
 // Joint bilateral upsampling: the four nearest traced pixels, weighted bilinearly and by how well their
 // surface (the full-resolution pixel each was traced from) matches this pixel's plane and normal, so light
-// does not bleed across depth or orientation edges.
-void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
+// does not bleed across depth or orientation edges. Specular is only fetched where this pixel is glossy.
+void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, out vec3 specular)
 {
-    if (uDivisor == 1) {
-        diffuse = texelFetch(uIndirectDiffuse, pixel, 0);
-        specular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
-        return;
-    }
     ivec2 lowSize = textureSize(uIndirectDiffuse, 0);
     ivec2 fullSize = textureSize(gPosition, 0);
     vec2 low = (vec2(pixel) + 0.5) / float(uDivisor) - 0.5;
     ivec2 base = ivec2(floor(low));
     vec2 f = low - vec2(base);
-    vec4 diffuseSum = vec4(0.0);
-    vec3 specularSum = vec3(0.0);
+    ivec2 taps[4];
+    float weights[4];
     float weightSum = 0.0;
     float bestWeight = -1.0;
-    vec4 bestDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
-    vec3 bestSpecular = vec3(0.0);
+    int best = 0;
+    float planeScale = 1.0 / max(uShadowOffset * 2.0, 1e-6); // metres to voxels
     for (int i = 0; i < 4; ++i) {
         ivec2 offset = ivec2(i & 1, i >> 1);
         ivec2 q = clamp(base + offset, ivec2(0), lowSize - 1);
@@ -48,28 +53,48 @@ void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specu
         vec4 qp = texelFetch(gPosition, source, 0);
         vec3 qn = texelFetch(gNormal, source, 0).xyz;
         float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        float planeDistance = abs(dot(qp.xyz - p, n)) / max(uShadowOffset * 2.0, 1e-6); // in voxels
-        float similarity = qp.a > 0.0 ? pow(max(dot(qn, n), 0.0), 8.0) * exp(-planeDistance) : 0.0;
-        float w = (bilinear + 1e-3) * similarity;
-        vec4 d = texelFetch(uIndirectDiffuse, q, 0);
-        vec3 s = texelFetch(uIndirectSpecular, q, 0).rgb;
-        diffuseSum += w * d;
-        specularSum += w * s;
-        weightSum += w;
+        float c = max(dot(qn, n), 0.0);
+        c *= c;
+        c *= c; // cos^8 without pow: llvmpipe expands pow to exp2(log2) per lane
+        float similarity = qp.a > 0.0 ? c * c * exp(-abs(dot(qp.xyz - p, n)) * planeScale) : 0.0;
+        taps[i] = q;
+        weights[i] = (bilinear + 1e-3) * similarity;
+        weightSum += weights[i];
         if (similarity > bestWeight) {
             bestWeight = similarity;
-            bestDiffuse = d;
-            bestSpecular = s;
+            best = i;
         }
     }
-    if (weightSum > 1e-4) {
-        diffuse = diffuseSum / weightSum;
-        specular = specularSum / weightSum;
-    } else { // no neighbour lies on this surface: take the closest match rather than nothing
-        diffuse = bestDiffuse;
-        specular = bestSpecular;
+    if (!(weightSum > 1e-4)) { // no neighbour lies on this surface: take the closest match rather than nothing
+        for (int i = 0; i < 4; ++i)
+            weights[i] = i == best ? 1.0 : 0.0;
+        weightSum = 1.0;
     }
+    diffuse = vec4(0.0);
+    for (int i = 0; i < 4; ++i)
+        diffuse += weights[i] * texelFetch(uIndirectDiffuse, taps[i], 0);
+    diffuse /= weightSum;
+    specular = vec3(0.0);
+#ifdef INDIRECT_SPECULAR
+    if (glossy) {
+        for (int i = 0; i < 4; ++i)
+            specular += weights[i] * texelFetch(uIndirectSpecular, taps[i], 0).rgb;
+        specular /= weightSum;
+    }
+#endif
 }
+#else
+void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, out vec3 specular)
+{
+    diffuse = texelFetch(uIndirectDiffuse, pixel, 0);
+    specular = vec3(0.0);
+#ifdef INDIRECT_SPECULAR
+    if (glossy)
+        specular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
+#endif
+}
+#endif
+#endif
 
 layout(location = 0) out vec4 oRadiance;
 
@@ -89,39 +114,63 @@ void main()
     float shininess = normalShininess.w;
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
     vec3 specular = texelFetch(gSpecular, pixel, 0).rgb;
-    vec3 emission = texelFetch(gEmission, pixel, 0).rgb;
-    vec4 indirectDiffuse;
-    vec3 indirectSpecular;
-    fetchIndirect(pixel, p, n, indirectDiffuse, indirectSpecular);
-    vec3 toEye = normalize(uCameraPosition - p);
     bool glossy = shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0;
 
-    vec3 direct = vec3(0.0);
-    if (uDirectEnabled) {
-        vec3 mirror = reflect(-toEye, n);
-        for (int i = 0; i < lightCount(); ++i) {
-            vec3 toLight = lightDirection(i, p);
-            float cosTheta = dot(n, toLight);
-            if (cosTheta <= 0.0)
-                continue;
-            vec3 irradiance = lightIrradiance(i, p, p + n * uShadowOffset) * cosTheta;
-            vec3 brdf = albedo / kPi;
-            if (glossy) // normalised modified Phong
-                brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
-            direct += brdf * irradiance;
-        }
-    }
-    vec3 diffuseIndirect = uIndirectDiffuseEnabled ? albedo * indirectDiffuse.rgb : vec3(0.0);
-    vec3 specularIndirect = uIndirectSpecularEnabled && glossy ? specular * indirectSpecular : vec3(0.0);
-    vec3 emitted = uEmissionEnabled ? emission : vec3(0.0);
+    vec4 indirectDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
+    vec3 indirectSpecular = vec3(0.0);
+#ifdef NEEDS_INDIRECT
+    fetchIndirect(pixel, p, n, glossy, indirectDiffuse, indirectSpecular);
+#endif
 
+    vec3 direct = vec3(0.0);
+#if defined(DIRECT) && (VIEW == 0 || VIEW == 1)
+    vec3 toEye = normalize(uCameraPosition - p);
+    vec3 mirror = reflect(-toEye, n);
+    for (int i = 0; i < lightCount(); ++i) {
+        vec3 toLight = lightDirection(i, p);
+        float cosTheta = dot(n, toLight);
+        if (cosTheta <= 0.0)
+            continue;
+        vec3 irradiance = lightIrradiance(i, p, p + n * uShadowOffset) * cosTheta;
+        vec3 brdf = albedo / kPi;
+        if (glossy) // normalised modified Phong
+            brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
+        direct += brdf * irradiance;
+    }
+#endif
+    vec3 diffuseIndirect = vec3(0.0);
+#ifdef INDIRECT_DIFFUSE
+    diffuseIndirect = albedo * indirectDiffuse.rgb;
+#endif
+    vec3 specularIndirect = vec3(0.0);
+#ifdef INDIRECT_SPECULAR
+    specularIndirect = glossy ? specular * indirectSpecular : vec3(0.0);
+#endif
+    vec3 emitted = vec3(0.0);
+#ifdef EMISSION
+    emitted = texelFetch(gEmission, pixel, 0).rgb;
+#endif
+
+#if VIEW == 0
     vec3 result = emitted + direct + diffuseIndirect + specularIndirect;
-    if (uView == 1) result = direct;
-    else if (uView == 2) result = diffuseIndirect;
-    else if (uView == 3) result = specularIndirect;
-    else if (uView == 4) result = vec3(uAoAvailable ? indirectDiffuse.a : 1.0);
-    else if (uView == 5) result = albedo;
-    else if (uView == 6) result = n * 0.5 + 0.5;
-    else if (uView == 7) result = emitted;
+#elif VIEW == 1
+    vec3 result = direct;
+#elif VIEW == 2
+    vec3 result = diffuseIndirect;
+#elif VIEW == 3
+    vec3 result = specularIndirect;
+#elif VIEW == 4
+#ifdef AO_AVAILABLE
+    vec3 result = vec3(indirectDiffuse.a);
+#else
+    vec3 result = vec3(1.0);
+#endif
+#elif VIEW == 5
+    vec3 result = albedo;
+#elif VIEW == 6
+    vec3 result = n * 0.5 + 0.5;
+#else
+    vec3 result = emitted;
+#endif
     oRadiance = vec4(result, 1.0);
 }
