@@ -53,16 +53,15 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     if (voxels.bounced)
         for (int level = 0; level < voxels.bounced.levels(); ++level)
             counts.push_back({"second-bounce radiance level " + std::to_string(level), count(voxels.bounced, level)});
-    for (const auto& [prefix, chains] : {std::pair{"directional radiance ", &voxels.directional},
-             std::pair{"second-bounce directional radiance ", &voxels.bouncedDirectional}})
-        for (std::size_t d = 0; d < chains->size(); ++d)
-            if ((*chains)[d])
-                for (int level = 0; level < (*chains)[d].levels(); ++level) {
-                    // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
-                    std::string name(prefix);
-                    name.append(std::to_string(d)).append(" level ").append(std::to_string(level + 1));
-                    counts.push_back({name, count((*chains)[d], level)});
-                }
+    for (const auto& [prefix, stack] : {std::pair{"directional radiance (six tiles) level ", &voxels.directional},
+             std::pair{"second-bounce directional radiance (six tiles) level ", &voxels.bouncedDirectional}})
+        if (*stack)
+            for (int level = 0; level < stack->levels(); ++level) {
+                // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
+                std::string name(prefix);
+                name.append(std::to_string(level + 1));
+                counts.push_back({name, count(*stack, level)});
+            }
     return counts;
 }
 

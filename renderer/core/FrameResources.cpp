@@ -5,11 +5,8 @@ namespace vct::render {
 std::size_t VoxelVolume::byteSize() const
 {
     std::size_t total = 0;
-    for (const gl::Texture* t : {&accumulators, &staticAlbedo, &staticNormal, &staticEmission, &albedo, &normal, &emission, &radiance, &bounced, &irradiance, &irradianceBack, &irradianceNormal})
+    for (const gl::Texture* t : {&accumulators, &staticAlbedo, &staticNormal, &staticEmission, &albedo, &normal, &emission, &radiance, &directional, &bounced, &bouncedDirectional, &irradiance, &irradianceBack, &irradianceNormal})
         total += *t ? t->byteSize() : 0;
-    for (const auto* chains : {&directional, &bouncedDirectional})
-        for (const gl::Texture& t : *chains)
-            total += t ? t.byteSize() : 0;
     return total;
 }
 

@@ -8,11 +8,13 @@
 
 #include <glm/mat4x4.hpp>
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace vct::render {
+
+/** Tiles of VoxelVolume::directional: one per direction a cone can travel along an axis. */
+constexpr int kDirectionalTiles = 6;
 
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
@@ -24,12 +26,13 @@ struct VoxelVolume {
     gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
     gl::Texture emission; ///< rgba16f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
-    /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid level k+1).
-    std::array<gl::Texture, 6> directional;
+    /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid
+    /// level k+1), as six tiles of one gl::Texture::create3DStack in that order (kDirectionalTiles).
+    gl::Texture directional;
     /// With bounces = 2 (VoxelBouncePass): radiance after a second bounce gathered per voxel, full mip chain,
     /// and its directional chains when anisotropic. Empty otherwise. Cones sample these when present.
     gl::Texture bounced;
-    std::array<gl::Texture, 6> bouncedDirectional;
+    gl::Texture bouncedDirectional;
     /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of RenderSettings::irradianceCellSize^3
     /// voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface along
     /// its normal (irradiance) and, for two-sided cells, against it (irradianceBack), a = ambient visibility,
@@ -49,7 +52,7 @@ struct VoxelVolume {
     std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance. */
     const gl::Texture& coneRadiance() const { return bounced ? bounced : radiance; }
-    const std::array<gl::Texture, 6>& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
+    const gl::Texture& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
 };
 
 /** Shadow maps of all lights: point lights as cube layers, directional lights as 2D layers, both plain rasterised

@@ -210,9 +210,9 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
     bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
     bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
     if (anisotropicMips && n >= 2)
-        bytes += 6 * chain(n / 2, 8, true);                      // six directional chains from level 1
+        bytes += 11 * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
     if (bounces >= 2)                                            // the second-bounce volume and its chains
-        bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 6 * chain(n / 2, 8, true) : 0);
+        bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 11 * chain(n / 2, 8, true) : 0);
     if (irradianceCache)                                         // irradiance front and back, cell normals, rgba16f
         bytes += 3 * chain(std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1), 8, false);
     return bytes;

@@ -362,9 +362,14 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
     static const char* const kDirectional[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
     for (std::size_t d = 0; d < 6; ++d)
         if (channel == kDirectional[d]) {
-            if (!v.directional[d] || level < 1)
+            if (!v.directional || level < 1 || level - 1 >= v.directional.levels())
                 throw std::invalid_argument("no " + channel + " level " + std::to_string(level) + " (needs anisotropic mips, levels from 1)");
-            return readTextureLevel(v.directional[d], level - 1, size);
+            // Tile d is the slab from z = 2d tiles (gl::Texture::create3DStack).
+            size = std::max(1, v.directional.width() >> (level - 1));
+            std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
+            glGetTextureSubImage(v.directional.id(), level - 1, 0, 0, GLint(2 * d) * size, size, size, size, GL_RGBA,
+                GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+            return data;
         }
     const gl::Texture* texture = channel == "albedo" ? &v.albedo
         : channel == "normal"                        ? &v.normal

@@ -60,18 +60,14 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
     const std::pair<const char*, const gl::Texture*> named[] = { { "accumulators", &v.accumulators },
         { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
         { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
-        { "emission", &v.emission }, { "radiance", &v.radiance }, { "bounced", &v.bounced },
+        { "emission", &v.emission }, { "radiance", &v.radiance },
+        { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
+        { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
         { "irradiance cache", &v.irradiance }, { "irradiance cache, back faces", &v.irradianceBack },
         { "irradiance cell normals", &v.irradianceNormal } };
     for (const auto& [name, texture] : named)
         if (*texture)
             list.push_back(describe(name, *texture));
-    static const char* const kAxes[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
-    for (const auto& [prefix, chains] :
-        { std::pair("radiance", &v.directional), std::pair("bounced", &v.bouncedDirectional) })
-        for (std::size_t d = 0; d < 6; ++d)
-            if ((*chains)[d])
-                list.push_back(describe(std::string(prefix) + kAxes[d], (*chains)[d]));
     return list;
 }
 

@@ -70,6 +70,19 @@ Texture Texture::create3D(GLenum internalFormat, int size, int levels)
     return t;
 }
 
+Texture Texture::create3DStack(GLenum internalFormat, int size, int tiles, int levels)
+{
+    const int depth = (2 * tiles - 1) * size;
+    Texture t(GL_TEXTURE_3D, internalFormat, size, size, depth, levels);
+    glTextureStorage3D(t.id(), levels, internalFormat, size, size, depth);
+    t.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+    t.setWrap(GL_CLAMP_TO_BORDER);
+    t.setBorderColor(0, 0, 0, 0);
+    for (int level = 0; level < levels; ++level) // the gaps must read as empty space
+        glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, nullptr);
+    return t;
+}
+
 Texture Texture::create3D(GLenum internalFormat, int width, int height, int depth)
 {
     Texture t(GL_TEXTURE_3D, internalFormat, width, height, depth, 1);

@@ -18,6 +18,15 @@ public:
     /** A single-level 3D texture that need not be a cube. */
     static Texture create3D(GLenum internalFormat, int width, int height, int depth);
     static Texture createCubeArray(GLenum internalFormat, int size, int cubes);
+    /**
+     * `tiles` cubic volumes of side `size` stacked along z in one mipmapped 3D texture, filtered and bordered
+     * like create3D. Shaders pick a tile by coordinate, which costs nothing, where picking one of several
+     * samplers per pixel costs a fetch from each (llvmpipe). Tile k starts at z = 2k*size: between tiles lies
+     * an empty (zeroed, never written) gap as deep as a tile, so at every level a trilinear lookup past a
+     * tile's end reads zeros, exactly as the border of a texture of its own would give, and the levels halve
+     * tiles and gaps alike. Depth (2*tiles - 1)*size; `levels` at most log2(size) + 1.
+     */
+    static Texture create3DStack(GLenum internalFormat, int size, int tiles, int levels);
 
     GLuint id() const { return m_handle.id(); }
     GLenum target() const { return m_target; }

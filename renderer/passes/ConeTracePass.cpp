@@ -38,7 +38,7 @@ void ConeTracePass::execute(FrameContext& frame)
 {
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
-    const bool anisotropic = settings.anisotropicMips && v.directional[0];
+    const bool anisotropic = settings.anisotropicMips && v.directional;
     const bool counting = frame.coneSampleCounter != nullptr;
     const bool cached = VoxelIrradiancePass::inUse(frame) && v.irradiance;
     gl::Program& program = m_programs[anisotropic ? 1 : 0][counting ? 1 : 0][cached ? 1 : 0];

@@ -32,9 +32,8 @@ void ConeTracingSetup::apply(gl::Program& program, const FrameContext& frame, bo
 
     (useBounced ? v.coneRadiance() : v.radiance).bindUnit(5);
     if (anisotropic) {
-        const auto& chains = useBounced ? v.coneDirectional() : v.directional;
-        for (std::size_t d = 0; d < 6; ++d)
-            chains[d].bindUnit(GLuint(6 + d));
+        const gl::Texture& chains = useBounced ? v.coneDirectional() : v.directional;
+        chains.bindUnit(6);
     }
 }
 

@@ -18,8 +18,7 @@ void MipmapPass::execute(FrameContext& frame)
     if (frame.settings.anisotropicMips)
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
     else
-        for (gl::Texture& t : v.directional)
-            t = gl::Texture();
+        v.directional = gl::Texture();
     m_radianceVersion = v.radianceVersion;
     m_anisotropic = frame.settings.anisotropicMips;
 }

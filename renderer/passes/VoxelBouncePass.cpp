@@ -19,8 +19,7 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame)
     if (frame.settings.bounces < 2 || !FrameRules::hasLightSources(frame)) {
         // Cones must go back to the first-bounce volume; the memory is not needed either.
         v.bounced = gl::Texture();
-        for (gl::Texture& t : v.bouncedDirectional)
-            t = gl::Texture();
+        v.bouncedDirectional = gl::Texture();
         m_radianceVersion = 0;
         return {PassDecision::Action::Skip, frame.settings.bounces < 2 ? "one bounce: the per-pixel cones gather it" : "no light"};
     }
@@ -32,7 +31,7 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame)
 void VoxelBouncePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    const bool anisotropic = frame.settings.anisotropicMips && v.directional[0];
+    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
     gl::Program& program = anisotropic ? m_anisotropicProgram : m_program;
     if (!program)
         program = frame.shaders.build({anisotropic ? "second bounce (anisotropic)" : "second bounce",
@@ -57,8 +56,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (anisotropic)
         m_builder.buildDirectional(frame.shaders, v.bounced, res, v.bouncedDirectional);
     else
-        for (gl::Texture& t : v.bouncedDirectional)
-            t = gl::Texture();
+        v.bouncedDirectional = gl::Texture();
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);
 }

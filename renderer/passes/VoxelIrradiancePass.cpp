@@ -39,7 +39,7 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
 void VoxelIrradiancePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    const bool anisotropic = frame.settings.anisotropicMips && v.directional[0];
+    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
     gl::Program& program = m_programs[anisotropic ? 1 : 0];
     if (!program) {
         program = frame.shaders.build({anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",

@@ -3,8 +3,6 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
-#include <array>
-
 namespace vct::render {
 
 class ShaderLibrary;
@@ -20,10 +18,11 @@ public:
     void buildBox(const ShaderLibrary& shaders, gl::Texture& volume, int resolution);
     /**
      * Six chains (+x, -x, +y, -y, +z, -z; texture level k = grid level k + 1) composited front to back from
-     * level 0 of @p source, (re)allocated in @p directional as needed.
+     * level 0 of @p source into the tiles of @p directional (a gl::Texture::create3DStack, (re)allocated as
+     * needed).
      */
     void buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source, int resolution,
-        std::array<gl::Texture, 6>& directional);
+        gl::Texture& directional);
 
 private:
     gl::Program m_boxProgram;

@@ -10,12 +10,19 @@ layout(binding = 5) uniform sampler3D uRadiance;
 // Direction-dependent mips (RenderSettings::anisotropicMips): level k here is grid level k + 1.
 // A compile-time variant, not a uniform branch: llvmpipe ran both sides of the branch and the plain
 // path cost six times as much.
-layout(binding = 6) uniform sampler3D uTowardsPosX;
-layout(binding = 7) uniform sampler3D uTowardsNegX;
-layout(binding = 8) uniform sampler3D uTowardsPosY;
-layout(binding = 9) uniform sampler3D uTowardsNegY;
-layout(binding = 10) uniform sampler3D uTowardsPosZ;
-layout(binding = 11) uniform sampler3D uTowardsNegZ;
+// The six chains are tiles of one texture stacked along z (+x, -x, +y, -y, +z, -z; VoxelVolume::directional),
+// tile k from z = 2k tiles, empty gaps between: a cone picks its side of each axis by coordinate. With six
+// samplers, picking per pixel fetched from both sides of every axis: the cone pass took 1.7 times as long
+// (atrium, 640x360, every pixel, no cache: 1688 ms against 987 ms).
+layout(binding = 6) uniform sampler3D uTowards;
+
+// Chain `tile` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a texture of its own has.
+vec4 sampleTowards(int tile, vec3 uvw, float l)
+{
+    const float kStackDepth = 11.0; // tiles: six, and the five gaps between them
+    uvw.z = (uvw.z + 2.0 * float(tile)) * (1.0 / kStackDepth);
+    return textureLod(uTowards, uvw, l);
+}
 #endif
 
 uniform vec3 uGridOrigin;
@@ -43,9 +50,9 @@ vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
     COUNT_FETCHES(level < 1.0 ? 4 : 3);
     vec3 w = dir * dir; // sums to one for a unit direction
     float l = max(level - 1.0, 0.0);
-    vec4 directional = w.x * (dir.x > 0.0 ? textureLod(uTowardsPosX, uvw, l) : textureLod(uTowardsNegX, uvw, l))
-        + w.y * (dir.y > 0.0 ? textureLod(uTowardsPosY, uvw, l) : textureLod(uTowardsNegY, uvw, l))
-        + w.z * (dir.z > 0.0 ? textureLod(uTowardsPosZ, uvw, l) : textureLod(uTowardsNegZ, uvw, l));
+    vec4 directional = w.x * sampleTowards(dir.x > 0.0 ? 0 : 1, uvw, l)
+        + w.y * sampleTowards(dir.y > 0.0 ? 2 : 3, uvw, l)
+        + w.z * sampleTowards(dir.z > 0.0 ? 4 : 5, uvw, l);
     return level < 1.0 ? mix(textureLod(uRadiance, uvw, 0.0), directional, level) : directional;
 #endif
 }

@@ -4,12 +4,9 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = 0) uniform sampler3D uSource; // premultiplied radiance, a = opacity
-layout(rgba16f, binding = 0) writeonly uniform image3D uTowardsPosX;
-layout(rgba16f, binding = 1) writeonly uniform image3D uTowardsNegX;
-layout(rgba16f, binding = 2) writeonly uniform image3D uTowardsPosY;
-layout(rgba16f, binding = 3) writeonly uniform image3D uTowardsNegY;
-layout(rgba16f, binding = 4) writeonly uniform image3D uTowardsPosZ;
-layout(rgba16f, binding = 5) writeonly uniform image3D uTowardsNegZ;
+// The six chains' first level as tiles stacked along z, tile k from z = 2k tiles: +x, -x, +y, -y, +z, -z
+// (gl::Texture::create3DStack).
+layout(rgba16f, binding = 0) writeonly uniform image3D uTowards;
 
 vec4 children[8]; // index x + 2y + 4z
 
@@ -32,14 +29,18 @@ vec4 composite(int axis, bool positive)
 void main()
 {
     ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, imageSize(uTowardsPosX))))
+    int tileSize = imageSize(uTowards).x;
+    if (any(greaterThanEqual(voxel, ivec3(tileSize))))
         return;
     for (int i = 0; i < 8; ++i)
         children[i] = texelFetch(uSource, voxel * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2), 0);
-    imageStore(uTowardsPosX, voxel, composite(0, true));
-    imageStore(uTowardsNegX, voxel, composite(0, false));
-    imageStore(uTowardsPosY, voxel, composite(1, true));
-    imageStore(uTowardsNegY, voxel, composite(1, false));
-    imageStore(uTowardsPosZ, voxel, composite(2, true));
-    imageStore(uTowardsNegZ, voxel, composite(2, false));
+    // Spelled out, not looped: with constant arguments composite() indexes children[] statically, which
+    // llvmpipe turns into registers; a loop variable made it index memory and doubled the mip pass.
+    ivec3 tile = ivec3(0, 0, 2 * tileSize); // the stride: a tile and the empty gap after it
+    imageStore(uTowards, voxel, composite(0, true));
+    imageStore(uTowards, voxel + tile, composite(0, false));
+    imageStore(uTowards, voxel + 2 * tile, composite(1, true));
+    imageStore(uTowards, voxel + 3 * tile, composite(1, false));
+    imageStore(uTowards, voxel + 4 * tile, composite(2, true));
+    imageStore(uTowards, voxel + 5 * tile, composite(2, false));
 }
