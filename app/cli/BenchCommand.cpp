@@ -4,6 +4,8 @@
 #include "cli/PerfCommand.h"
 #include "cli/PlanBenchmark.h"
 #include "cli/SceneInput.h"
+#include "cli/TargetsBenchmark.h"
+#include "imageio/ImageFile.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
 
@@ -11,8 +13,10 @@
 #include <QCoreApplication>
 #include <QSaveFile>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 namespace vct::cli {
 
@@ -43,9 +47,12 @@ int BenchCommand::run(int argc, char** argv)
         "  perf SCENE   per-pass cost, voxel memory, cone-pass sampling efficiency and scaling curves (CSV,\n"
         "               Markdown, SVG/PNG charts); see vct-bench perf --help.\n"
         "  accuracy SCENE  error against a reference and GPU time over a sweep of settings, with the path tracer's\n"
-        "               own curve (CSV, Markdown, SVG/PNG chart); see vct-bench accuracy --help."));
+        "               own curve (CSV, Markdown, SVG/PNG chart); see vct-bench accuracy --help.\n"
+        "  targets SCENE   the naive path (--naive-set) against the settings given (--set), frames interleaved in\n"
+        "               one run: full-frame and camera-only speed-ups, the interactive preview's frame rate and,\n"
+        "               with --reference, both paths' relative MSE (docs/BENCHMARKS.md)."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan, perf or accuracy"));
+    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan, perf, accuracy or targets"));
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Frame width (default 640)."), QStringLiteral("W"), QStringLiteral("640"));
     const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Frame height (default 360)."), QStringLiteral("H"), QStringLiteral("360"));
@@ -54,12 +61,25 @@ int BenchCommand::run(int argc, char** argv)
     const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable (see vct-render --help)."), QStringLiteral("key=value"));
     const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Also write the Markdown tables to this file."), QStringLiteral("FILE.md"));
     const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
-    parser.addOptions({widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption});
+    const QCommandLineOption naiveSetOption(QStringLiteral("naive-set"),
+        QStringLiteral("targets: a setting of the naive path on top of --set, repeatable (default: indirect_res=1 and "
+                       "irradiance_cache=off, every pixel traced with the full cone set)."),
+        QStringLiteral("key=value"));
+    const QCommandLineOption referenceOption(QStringLiteral("reference"),
+        QStringLiteral("targets: a linear reference image (PFM/EXR) of the scene's camera; frames are box-downsampled to its size."),
+        QStringLiteral("FILE"));
+    // The editor's viewport renders at this share of its size while the view moves (ViewportWidget::kInteractiveScale).
+    const QCommandLineOption previewScaleOption(QStringLiteral("preview-scale"),
+        QStringLiteral("targets: the interactive preview's share of --width/--height (default 0.35, as the editor)."),
+        QStringLiteral("S"), QStringLiteral("0.35"));
+    parser.addOptions({widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption,
+        naiveSetOption, referenceOption, previewScaleOption});
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
-    if (args.size() != 2 || args[0] != QStringLiteral("plan"))
-        return fail(1, QStringLiteral("usage: vct-bench plan SCENE [options] (see --help)"));
+    if (args.size() != 2 || (args[0] != QStringLiteral("plan") && args[0] != QStringLiteral("targets")))
+        return fail(1, QStringLiteral("usage: vct-bench plan|targets SCENE [options] (see --help)"));
+    const bool targets = args[0] == QStringLiteral("targets");
     bool ok = false;
     const int width = parser.value(widthOption).toInt(&ok);
     const int height = ok ? parser.value(heightOption).toInt(&ok) : 0;
@@ -77,6 +97,26 @@ int BenchCommand::run(int argc, char** argv)
     assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));
     if (const QString problem = applySettingAssignments(assignments, settings); !problem.isEmpty())
         return fail(1, problem);
+    render::RenderSettings naiveSettings = settings;
+    QStringList naiveAssignments = parser.values(naiveSetOption);
+    if (naiveAssignments.isEmpty())
+        naiveAssignments = {QStringLiteral("indirect_res=1"), QStringLiteral("irradiance_cache=off")};
+    if (const QString problem = applySettingAssignments(naiveAssignments, naiveSettings); !problem.isEmpty())
+        return fail(1, problem);
+    const double previewScale = parser.value(previewScaleOption).toDouble(&ok);
+    if (!ok || !(previewScale > 0.0 && previewScale <= 1.0))
+        return fail(1, QStringLiteral("--preview-scale must be in (0, 1]"));
+    std::optional<render::RadianceImage> reference;
+    if (parser.isSet(referenceOption)) {
+        std::string readError;
+        reference = io::ImageFile::read(parser.value(referenceOption).toStdString(), &readError);
+        if (!reference)
+            return fail(1, QString::fromStdString(readError));
+        const int factor = width / reference->width;
+        if (factor < 1 || reference->width * factor != width || reference->height * factor != height)
+            return fail(1, QStringLiteral("the reference is %1x%2: --width/--height must be the same integer multiple of it")
+                               .arg(reference->width).arg(reference->height));
+    }
 
     std::string contextError;
     auto context = render::HeadlessContext::createPreferring(
@@ -85,18 +125,41 @@ int BenchCommand::run(int argc, char** argv)
         return fail(2, QString::fromStdString(contextError));
     std::string report;
     try {
-        render::Renderer renderer(context->procAddressFunction());
-        renderer.setSettings(settings);
-        std::vector<SequenceResult> results;
-        for (const EditSequence& sequence : PlanBenchmark::standardSequences(scene)) {
-            results.push_back(PlanBenchmark::run(renderer, scene, sequence, width, height, frames));
-            std::fprintf(stderr, "  %-40s planned %8.1f ms  forced %8.1f ms\n", sequence.name.c_str(),
-                results.back().plannedMs, results.back().forcedMs);
+        if (targets) {
+            render::Renderer naive(context->procAddressFunction());
+            render::Renderer fast(context->procAddressFunction());
+            naive.setSettings(naiveSettings);
+            fast.setSettings(settings);
+            naive.setScene(scene);
+            fast.setScene(scene);
+            const int previewWidth = std::max(1, int(width * previewScale + 0.5));
+            const int previewHeight = std::max(1, int(height * previewScale + 0.5));
+            const TargetsResult result = TargetsBenchmark::run(naive, fast, scene.camera, width, height, previewWidth,
+                previewHeight, frames, reference ? &*reference : nullptr);
+            std::string command = "`vct-bench targets " + args[1].toStdString() + " --width " + std::to_string(width)
+                + " --height " + std::to_string(height) + " --voxel-res " + std::to_string(settings.voxelResolution)
+                + " --frames " + std::to_string(frames);
+            for (const QString& a : parser.values(setOption))
+                command += " --set " + a.toStdString();
+            for (const QString& a : parser.values(naiveSetOption))
+                command += " --naive-set " + a.toStdString();
+            if (reference)
+                command += " --reference " + parser.value(referenceOption).toStdString();
+            report = command + "` on " + context->description() + "\n\n" + TargetsBenchmark::markdown(result);
+        } else {
+            render::Renderer renderer(context->procAddressFunction());
+            renderer.setSettings(settings);
+            std::vector<SequenceResult> results;
+            for (const EditSequence& sequence : PlanBenchmark::standardSequences(scene)) {
+                results.push_back(PlanBenchmark::run(renderer, scene, sequence, width, height, frames));
+                std::fprintf(stderr, "  %-40s planned %8.1f ms  forced %8.1f ms\n", sequence.name.c_str(),
+                    results.back().plannedMs, results.back().forcedMs);
+            }
+            char header[512];
+            std::snprintf(header, sizeof header, "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
+                qPrintable(args[1]), width, height, settings.voxelResolution, frames, context->description().c_str());
+            report = header + PlanBenchmark::markdown(results);
         }
-        char header[512];
-        std::snprintf(header, sizeof header, "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
-            qPrintable(args[1]), width, height, settings.voxelResolution, frames, context->description().c_str());
-        report = header + PlanBenchmark::markdown(results);
     } catch (const std::exception& e) {
         return fail(3, QString::fromUtf8(e.what()));
     }

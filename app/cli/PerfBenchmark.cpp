@@ -1,9 +1,8 @@
 #include "cli/PerfBenchmark.h"
 
+#include "cli/CameraOrbit.h"
 #include "cli/SceneSubdivider.h"
 #include "core/Renderer.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -60,12 +59,6 @@ ModeTiming summarize(const std::vector<TimedFrame>& frames)
         timing.passes.push_back({ last[p].name, last[p].action, spread(ms) });
     }
     return timing;
-}
-
-void orbit(render::Camera& camera, float degrees)
-{
-    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), camera.up);
-    camera.position = camera.lookAt + glm::vec3(turn * glm::vec4(camera.position - camera.lookAt, 0.0f));
 }
 
 } // namespace
@@ -134,11 +127,11 @@ PerfResult PerfBenchmark::measure(const PerfConfig& config)
     result.full = summarize(full);
 
     render::Camera moving = base;
-    orbit(moving, kOrbitStepDeg);
+    orbitCamera(moving, kOrbitStepDeg);
     m_renderer.renderFrame(moving, w, h); // warm-up of the camera-only path
     std::vector<TimedFrame> cameraOnly;
     for (int i = 0; i < m_frames; ++i) {
-        orbit(moving, kOrbitStepDeg);
+        orbitCamera(moving, kOrbitStepDeg);
         cameraOnly.push_back(timedFrame(m_renderer, moving, w, h));
     }
     result.cameraOnly = summarize(cameraOnly);
