@@ -39,7 +39,12 @@ void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& r
     lister.set("uRegionOrigin", region.lo);
     lister.set("uRegionSize", size);
     lister.set("uGroupSize", kGroupSize);
-    const glm::ivec3 groups = (size + 3) / 4;
+    // The lister's own work-group size: on llvmpipe each group costs a fixed overhead, and 8^3 groups
+    // instead of 4^3 took the listing of the atrium's 128^3 grid from ~80 ms to ~30 ms.
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(lister.id(), GL_COMPUTE_WORK_GROUP_SIZE, local);
+    const glm::ivec3 groupSize(local[0], local[1], local[2]);
+    const glm::ivec3 groups = (size + groupSize - 1) / groupSize;
     glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }

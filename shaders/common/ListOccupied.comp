@@ -5,7 +5,7 @@
 // most of a grid is empty.
 #include "common/AppendCell.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 8) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo; // a = opacity: a voxel holds a surface when it is above zero
 

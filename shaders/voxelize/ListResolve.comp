@@ -4,7 +4,7 @@
 #include "common/AppendCell.glsl"
 #include "common/VoxelAccumulators.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 8) in;
 
 layout(r32f, binding = 0) readonly uniform image3D uAccumulators;
 
