@@ -34,8 +34,7 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     // 8-bit targets cannot hold NaN or Inf, so only float ones are checked.
     const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
         {"g-buffer position", &screen.position}, {"g-buffer normal", &screen.normal},
-        {"g-buffer albedo", &screen.albedo}, {"g-buffer specular", &screen.specular},
-        {"g-buffer emission", &screen.emission}, {"indirect diffuse", &screen.indirectDiffuse},
+        {"g-buffer albedo", &screen.albedo}, {"indirect diffuse", &screen.indirectDiffuse},
         {"indirect specular", &screen.indirectSpecular}, {"voxel normal", &voxels.normal},
         {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};
     for (const auto& [name, texture] : targets)

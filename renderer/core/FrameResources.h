@@ -72,11 +72,9 @@ struct ShadowMaps {
 struct ScreenTargets {
     int width = 0, height = 0;
     int indirectDivisor = 1; ///< the indirect targets are width/divisor x height/divisor (rounded up)
-    gl::Texture position;  ///< rgba32f: world position, a = 1 where geometry was hit.
-    gl::Texture normal;    ///< rgba16f: world shading normal, a = Phong exponent.
-    gl::Texture albedo;    ///< rgba16f: linear albedo.
-    gl::Texture specular;  ///< rgba16f: specular reflectance.
-    gl::Texture emission;  ///< rgba16f: emitted radiance toward the camera (front faces only).
+    gl::Texture position;  ///< rgba32f: world position, a = material index + 1 (GpuScene's table), 0 = no geometry.
+    gl::Texture normal;    ///< rgba16f: world shading normal facing the camera, a = 1 front face, 0 back face.
+    gl::Texture albedo;    ///< rgba16f: linear albedo (texture applied).
     gl::Texture depth;
     gl::Framebuffer gbuffer;
     gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.

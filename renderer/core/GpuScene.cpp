@@ -53,6 +53,32 @@ GpuScene::GpuScene(const Scene& scene)
     m_whiteTexture = gl::Texture::create2D(GL_SRGB8_ALPHA8, 1, 1);
     const unsigned char white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(m_whiteTexture.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    uploadMaterialTable();
+}
+
+void GpuScene::uploadMaterialTable()
+{
+    // Two rgba32f texels per material (shaders/common/MaterialTable.glsl): specular rgb + shininess, emission.
+    std::vector<glm::vec4> entries;
+    const Material fallback;
+    for (std::size_t i = 0; i <= m_scene.materials.size(); ++i) {
+        const Material& m = i < m_scene.materials.size() ? m_scene.materials[i] : fallback;
+        entries.emplace_back(m.specular, m.shininess);
+        entries.emplace_back(m.emission, 0.0f);
+    }
+    const std::size_t bytes = entries.size() * sizeof(glm::vec4);
+    if (!m_materialTable || m_materialTableBytes != bytes) {
+        m_materialTable = gl::Buffer(bytes, entries.data());
+        m_materialTableView = gl::Texture::createBufferView(GL_RGBA32F, m_materialTable.id(), int(entries.size()));
+        m_materialTableBytes = bytes;
+    } else {
+        m_materialTable.upload(entries.data(), bytes);
+    }
+}
+
+void GpuScene::bindMaterialTable(GLuint unit) const
+{
+    m_materialTableView.bindUnit(unit);
 }
 
 void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit) const
@@ -65,9 +91,9 @@ void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedo
         if (m_meshes[i].indexCount == 0)
             continue;
         const Material fallback;
-        const Material& material = mesh.material >= 0 && std::size_t(mesh.material) < m_scene.materials.size()
-            ? m_scene.materials[std::size_t(mesh.material)]
-            : fallback;
+        const bool valid = mesh.material >= 0 && std::size_t(mesh.material) < m_scene.materials.size();
+        const Material& material = valid ? m_scene.materials[std::size_t(mesh.material)] : fallback;
+        program.set("uMaterialIndex", valid ? mesh.material : int(m_scene.materials.size()));
         program.set("uModel", mesh.transform);
         program.set("uNormalMatrix", glm::mat4(glm::inverseTranspose(glm::mat3(mesh.transform))));
         program.set("uAlbedo", material.albedo);
@@ -90,8 +116,10 @@ void GpuScene::setTransform(std::size_t mesh, const glm::mat4& transform)
 
 void GpuScene::setMaterial(std::size_t index, const Material& material)
 {
-    if (index < m_scene.materials.size())
+    if (index < m_scene.materials.size()) {
         m_scene.materials[index] = material;
+        uploadMaterialTable();
+    }
 }
 
 void GpuScene::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)

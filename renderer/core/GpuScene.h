@@ -10,6 +10,9 @@
 
 namespace vct::render {
 
+/** Texture unit of the material table in the passes that read the g-buffer (MATERIAL_TABLE_UNIT). */
+constexpr GLuint kMaterialTableUnit = 3;
+
 /** Which meshes a draw covers: the voxelizer draws static and dynamic meshes into separate layers. */
 enum class MeshFilter { All, Static, Dynamic };
 
@@ -24,6 +27,11 @@ public:
      * at unit `albedoUnit`.
      */
     void draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit) const;
+    /**
+     * Binds the material table (shaders/common/MaterialTable.glsl) to texture unit `unit`: the per-material
+     * values the g-buffer does not store per pixel, found through the material index it does.
+     */
+    void bindMaterialTable(GLuint unit) const;
     void setTransform(std::size_t mesh, const glm::mat4& transform);
     void setMaterial(std::size_t index, const Material& material);
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
@@ -38,10 +46,15 @@ private:
         gl::VertexArray vao;
         GLsizei indexCount = 0;
     };
+    void uploadMaterialTable();
+
     Scene m_scene; // a copy: transforms and materials change through setters, meshes never
     std::vector<GpuMesh> m_meshes;
     std::vector<gl::Texture> m_textures;
     gl::Texture m_whiteTexture;
+    gl::Buffer m_materialTable; // one entry per material, then the fallback for meshes without a valid one
+    gl::Texture m_materialTableView; // rgba32f buffer texture over m_materialTable
+    std::size_t m_materialTableBytes = 0;
 };
 
 } // namespace vct::render

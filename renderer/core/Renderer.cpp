@@ -73,15 +73,13 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
     s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.normal = gl::Texture::create2D(GL_RGBA16F, width, height);
     s.albedo = gl::Texture::create2D(GL_RGBA16F, width, height);
-    s.specular = gl::Texture::create2D(GL_RGBA16F, width, height);
-    s.emission = gl::Texture::create2D(GL_RGBA16F, width, height);
     s.depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
     s.gbuffer = gl::Framebuffer::create();
     int i = 0;
-    for (const gl::Texture* t : {&s.position, &s.normal, &s.albedo, &s.specular, &s.emission})
+    for (const gl::Texture* t : {&s.position, &s.normal, &s.albedo})
         s.gbuffer.attachColor(i++, *t);
     s.gbuffer.attachDepth(s.depth);
-    s.gbuffer.finish(5);
+    s.gbuffer.finish(3);
     const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
     s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
     s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);

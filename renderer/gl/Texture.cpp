@@ -92,6 +92,13 @@ Texture Texture::create3D(GLenum internalFormat, int width, int height, int dept
     return t;
 }
 
+Texture Texture::createBufferView(GLenum internalFormat, GLuint buffer, int texels)
+{
+    Texture t(GL_TEXTURE_BUFFER, internalFormat, texels, 1, 1, 1);
+    glTextureBuffer(t.id(), internalFormat, buffer);
+    return t;
+}
+
 Texture Texture::createCubeArray(GLenum internalFormat, int size, int cubes)
 {
     Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, internalFormat, size, size, 6 * cubes, 1);

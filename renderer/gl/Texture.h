@@ -18,6 +18,8 @@ public:
     /** A single-level 3D texture that need not be a cube. */
     static Texture create3D(GLenum internalFormat, int width, int height, int depth);
     static Texture createCubeArray(GLenum internalFormat, int size, int cubes);
+    /** A buffer texture (samplerBuffer) over `texels` texels of @p buffer, which must outlive it. */
+    static Texture createBufferView(GLenum internalFormat, GLuint buffer, int texels);
     /**
      * `tiles` cubic volumes of side `size` stacked along z in one mipmapped 3D texture, filtered and bordered
      * like create3D. Shaders pick a tile by coordinate, which costs nothing, where picking one of several

@@ -50,8 +50,7 @@ void CompositePass::execute(FrameContext& frame)
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
     s.albedo.bindUnit(2);
-    s.specular.bindUnit(3);
-    s.emission.bindUnit(4);
+    frame.scene.bindMaterialTable(kMaterialTableUnit);
     s.indirectDiffuse.bindUnit(5);
     s.indirectSpecular.bindUnit(6);
     s.finalTarget.bind();

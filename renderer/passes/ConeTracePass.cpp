@@ -76,7 +76,7 @@ void ConeTracePass::execute(FrameContext& frame)
 
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
-    s.specular.bindUnit(3);
+    frame.scene.bindMaterialTable(kMaterialTableUnit);
     program.set("uDivisor", s.indirectDivisor);
     program.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     s.indirectTarget.bind();

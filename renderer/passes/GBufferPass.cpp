@@ -15,7 +15,7 @@ void GBufferPass::execute(FrameContext& frame)
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 5; ++i)
+    for (int i = 0; i < 3; ++i)
         glClearNamedFramebufferfv(s.gbuffer.id(), GL_COLOR, i, zero);
     const float one = 1.0f;
     glClearNamedFramebufferfv(s.gbuffer.id(), GL_DEPTH, 0, &one);

@@ -11,12 +11,12 @@
 //   VIEW      RenderSettings::view (0 = the final image)
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
+#define MATERIAL_TABLE_UNIT 3
+#include "common/MaterialTable.glsl"
 
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
 layout(binding = 2) uniform sampler2D gAlbedo;
-layout(binding = 3) uniform sampler2D gSpecular;
-layout(binding = 4) uniform sampler2D gEmission;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular;
 
@@ -109,11 +109,12 @@ void main()
         return;
     }
     vec3 p = position.xyz;
-    vec4 normalShininess = texelFetch(gNormal, pixel, 0);
-    vec3 n = normalShininess.xyz;
-    float shininess = normalShininess.w;
+    vec4 normalFacing = texelFetch(gNormal, pixel, 0);
+    vec3 n = normalFacing.xyz;
+    MaterialEntry material = materialAt(position.a);
+    float shininess = material.specularShininess.w;
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    vec3 specular = texelFetch(gSpecular, pixel, 0).rgb;
+    vec3 specular = material.specularShininess.rgb;
     bool glossy = shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0;
 
     vec4 indirectDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
@@ -148,7 +149,7 @@ void main()
 #endif
     vec3 emitted = vec3(0.0);
 #ifdef EMISSION
-    emitted = texelFetch(gEmission, pixel, 0).rgb;
+    emitted = normalFacing.w > 0.5 ? material.emission.rgb : vec3(0.0);
 #endif
 
 #if VIEW == 0

@@ -1,12 +1,13 @@
 // Indirect light per visible pixel: diffuse cones over the hemisphere (their weights split the cosine lobe,
 // summing to one) and one specular cone along the mirror direction for glossy surfaces.
 #include "common/ConeMath.glsl"
+#define MATERIAL_TABLE_UNIT 3
+#include "common/MaterialTable.glsl"
 
 #define MAX_CONES 32
 
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 3) uniform sampler2D gSpecular;
 #ifdef COUNT_SAMPLES
 // Benchmark-only variant (vct-bench perf, core/ConeSampleCounter.h): counts the 3D texture fetches. Each
 // fragment sums its own and adds them once to a 64-bit count kept as two words, so atomics stay few.
@@ -84,8 +85,7 @@ void main()
     oSpecular = vec4(0.0);
     if (position.a <= 0.0)
         return;
-    vec4 normalShininess = texelFetch(gNormal, pixel, 0);
-    vec3 n = normalShininess.xyz;
+    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
     vec3 origin = position.xyz + n * uConeOffset;
 
     if (uDiffuseEnabled) {
@@ -96,8 +96,9 @@ void main()
         oDiffuse = gatherDiffuse(origin, n);
 #endif
     }
-    float shininess = normalShininess.w;
-    vec3 specular = texelFetch(gSpecular, pixel, 0).rgb;
+    MaterialEntry material = materialAt(position.a);
+    float shininess = material.specularShininess.w;
+    vec3 specular = material.specularShininess.rgb;
     if (uSpecularEnabled && shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0) {
         vec3 view = normalize(position.xyz - uCameraPosition);
         vec3 mirror = reflect(view, n);

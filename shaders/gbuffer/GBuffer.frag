@@ -3,16 +3,12 @@ in vec3 vNormal;
 in vec2 vUv;
 
 uniform vec3 uAlbedo;
-uniform vec3 uEmission;
-uniform vec3 uSpecular;
-uniform float uShininess;
+uniform int uMaterialIndex; // into the material table (common/MaterialTable.glsl): specular, emission
 layout(binding = 0) uniform sampler2D uAlbedoTexture;
 
-layout(location = 0) out vec4 oPosition;
-layout(location = 1) out vec4 oNormal;
+layout(location = 0) out vec4 oPosition; // world position, a = material index + 1 (0 = no geometry)
+layout(location = 1) out vec4 oNormal;   // unit normal facing the camera, w = 1 front face, 0 back face
 layout(location = 2) out vec4 oAlbedo;
-layout(location = 3) out vec4 oSpecular;
-layout(location = 4) out vec4 oEmission;
 
 void main()
 {
@@ -25,9 +21,7 @@ void main()
     // Surfaces are shaded from the side the camera sees; emission is one-sided (front faces only).
     if (!gl_FrontFacing)
         n = -n;
-    oPosition = vec4(vWorld, 1.0);
-    oNormal = vec4(n, uShininess);
+    oPosition = vec4(vWorld, float(uMaterialIndex + 1));
+    oNormal = vec4(n, gl_FrontFacing ? 1.0 : 0.0);
     oAlbedo = vec4(uAlbedo * texture(uAlbedoTexture, vUv).rgb, 1.0);
-    oSpecular = vec4(uSpecular, 1.0);
-    oEmission = vec4(gl_FrontFacing ? uEmission : vec3(0.0), 1.0);
 }
