@@ -19,6 +19,7 @@ private slots:
     void emissionIsAddedUnshadowed();
     void mipLevelsAreBoxFilters();
     void directionalMipsKeepThinWallsOpaque();
+    void directionalChainsMatchCompositingAtEveryLevel();
     void noGlErrors();
 
 private:
@@ -183,6 +184,57 @@ void LightInjectionTest::directionalMipsKeepThinWallsOpaque()
     // A level further up, the floor is one layer of four: upward cones still see it whole.
     QVERIFY(std::abs(voxel("radiance+y", 1, 0, 1, 2).a - 1.0f) < 1e-3f);
     QVERIFY(std::abs(voxel("radiance", 1, 0, 1, 2).a - 0.25f) < 1e-3f);
+}
+
+// The six chains share one texture as tiles (gl::Texture::create3DStack); each must hold, at every level down
+// to a single texel, its own front-to-back compositing of the level below, with nothing of its neighbours.
+void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
+{
+    render::Scene scene = floorScene(true);
+    scene.materials[0].emission = glm::vec3(0.3f, 0.2f, 0.1f);
+    render(scene, 16, true);
+    int size0 = 0;
+    const std::vector<float> level0 = m_gl.renderer->readVoxels("radiance", 0, size0);
+    QCOMPARE(size0, 16);
+    const char* const channels[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
+    for (int tile = 0; tile < 6; ++tile) {
+        const int axis = tile / 2;
+        const bool positive = tile % 2 == 0; // travelling towards +axis: the lower child is in front
+        std::vector<double> previous(level0.begin(), level0.end());
+        int previousSize = size0;
+        for (int level = 1; level <= 4; ++level) {
+            const int size = previousSize / 2;
+            std::vector<double> expected(std::size_t(size) * size * size * 4, 0.0);
+            const auto at = [&previous, previousSize](glm::ivec3 v, int c) {
+                return previous[((std::size_t(v.z) * previousSize + v.y) * previousSize + v.x) * 4 + c];
+            };
+            for (int z = 0; z < size; ++z)
+                for (int y = 0; y < size; ++y)
+                    for (int x = 0; x < size; ++x)
+                        for (int i = 0; i < 4; ++i) {
+                            glm::ivec3 lateral(0);
+                            lateral[(axis + 1) % 3] = i & 1;
+                            lateral[(axis + 2) % 3] = i >> 1;
+                            glm::ivec3 lower = glm::ivec3(x, y, z) * 2 + lateral;
+                            glm::ivec3 upper = lower;
+                            upper[axis] += 1;
+                            const glm::ivec3 front = positive ? lower : upper, back = positive ? upper : lower;
+                            const double frontAlpha = at(front, 3);
+                            for (int c = 0; c < 4; ++c)
+                                expected[((std::size_t(z) * size + y) * size + x) * 4 + c]
+                                    += 0.25 * (at(front, c) + (1.0 - frontAlpha) * at(back, c));
+                        }
+            int gpuSize = 0;
+            const std::vector<float> gpu = m_gl.renderer->readVoxels(channels[tile], level, gpuSize);
+            QCOMPARE(gpuSize, size);
+            double worst = 0.0;
+            for (std::size_t k = 0; k < expected.size(); ++k)
+                worst = std::max(worst, std::abs(double(gpu[k]) - expected[k]) - 2e-3 * level * std::abs(expected[k]));
+            QVERIFY2(worst <= 1e-5, qPrintable(QString("%1 level %2 off by %3").arg(channels[tile]).arg(level).arg(worst)));
+            previous = expected;
+            previousSize = size;
+        }
+    }
 }
 
 void LightInjectionTest::noGlErrors()
