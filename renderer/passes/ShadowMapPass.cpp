@@ -78,6 +78,7 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
     const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, shadows.pointNear, shadows.pointFar);
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
+        m_program.set("uOrigin", light.position);
         for (int face = 0; face < 6; ++face) {
             shadows.framebuffer.attachDepthLayer(point, 6 * i + face);
             shadows.framebuffer.finish(0);
@@ -85,11 +86,12 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
                 glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
             if (!light.castsShadows)
                 continue;
-            const glm::mat4 view = glm::lookAt(light.position, light.position + kFaceDirection[face], kFaceUp[face]);
+            const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceDirection[face], kFaceUp[face]);
             m_program.set("uViewProjection", cubeProjection * view);
             frame.scene.draw(m_program, filter, 0);
         }
     }
+    m_program.set("uOrigin", glm::vec3(0.0f));
     for (int i = 0; i < directionals; ++i) {
         shadows.framebuffer.attachDepthLayer(directional, i);
         shadows.framebuffer.finish(0);
