@@ -37,9 +37,12 @@ struct VoxelVolume {
     /// voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface along
     /// its normal (irradiance) and, for two-sided cells, against it (irradianceBack), a = ambient visibility,
     /// a = -1 where not gathered; irradianceNormal: the cell normal, w = 0 none, 1 one-sided, 2 two-sided.
+    /// Only cells some traced pixel looks up are gathered: irradianceRequested (r32ui) is 1 where a cell was
+    /// gathered for the current voxel light, 0 elsewhere, where the three hold their cleared values.
     gl::Texture irradiance;
     gl::Texture irradianceBack;
     gl::Texture irradianceNormal;
+    gl::Texture irradianceRequested;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
     VoxelRegion changedRegion;

@@ -213,8 +213,10 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         bytes += 11 * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
     if (bounces >= 2)                                            // the second-bounce volume and its chains
         bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 11 * chain(n / 2, 8, true) : 0);
-    if (irradianceCache)                                         // irradiance front and back, cell normals, rgba16f
-        bytes += 3 * chain(std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1), 8, false);
+    if (irradianceCache) { // irradiance front and back, cell normals, rgba16f; which cells were gathered, r32ui
+        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1);
+        bytes += 3 * chain(cells, 8, false) + chain(cells, 4, false);
+    }
     return bytes;
 }
 

@@ -56,8 +56,9 @@ std::unique_ptr<Pipeline> makePipeline()
     passes.push_back(std::make_unique<InjectLightPass>());
     passes.push_back(std::make_unique<MipmapPass>());
     passes.push_back(std::make_unique<VoxelBouncePass>());
-    passes.push_back(std::make_unique<VoxelIrradiancePass>());
+    // Before the irradiance cache: its traced pixels decide which cells it gathers.
     passes.push_back(std::make_unique<GBufferPass>());
+    passes.push_back(std::make_unique<VoxelIrradiancePass>());
     passes.push_back(std::make_unique<ConeTracePass>());
     passes.push_back(std::make_unique<CompositePass>());
     return std::make_unique<Pipeline>(std::move(passes));

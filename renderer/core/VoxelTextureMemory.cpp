@@ -64,7 +64,8 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
         { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
         { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
         { "irradiance cache", &v.irradiance }, { "irradiance cache, back faces", &v.irradianceBack },
-        { "irradiance cell normals", &v.irradianceNormal } };
+        { "irradiance cell normals", &v.irradianceNormal },
+        { "irradiance cells gathered", &v.irradianceRequested } };
     for (const auto& [name, texture] : named)
         if (*texture)
             list.push_back(describe(name, *texture));

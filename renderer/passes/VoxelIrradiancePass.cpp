@@ -20,6 +20,12 @@ VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& fr
         s.coneOffsetVoxels, frame.voxels.frame.resolution, FrameRules::ambientOcclusionNeeded(frame), s.irradianceCellSize};
 }
 
+VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& frame)
+{
+    return {frame.projection * frame.view, frame.screen.width, frame.screen.height, frame.screen.indirectDivisor,
+        frame.versions.staticGeometry, frame.versions.dynamicGeometry};
+}
+
 PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
@@ -27,39 +33,96 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
         v.irradiance = gl::Texture(); // the cone pass traces per pixel; the memory is not needed either
         v.irradianceBack = gl::Texture();
         v.irradianceNormal = gl::Texture();
+        v.irradianceRequested = gl::Texture();
         m_radianceVersion = 0;
         return {PassDecision::Action::Skip,
             frame.settings.irradianceCache ? "no diffuse light needed" : "irradiance cache off: cones per pixel"};
     }
-    if (v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key)
-        return {PassDecision::Action::Reuse, "voxel light unchanged"};
-    return {PassDecision::Action::Run, v.irradiance ? "voxel light or a gather setting changed" : "no valid output yet"};
+    const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
+    if (!lightKept)
+        return {PassDecision::Action::Run,
+            std::string(v.irradiance ? "voxel light or a gather setting changed" : "no valid output yet")
+                + ": gathering the cells in view"};
+    if (viewOf(frame) == m_view)
+        return {PassDecision::Action::Reuse, "voxel light and view unchanged"};
+    return {PassDecision::Action::Run, "view changed: gathering only the cells that came into view"};
+}
+
+void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
+{
+    if (!v.irradiance || v.irradiance.width() != cells) {
+        for (gl::Texture* t : {&v.irradiance, &v.irradianceBack, &v.irradianceNormal}) {
+            *t = gl::Texture::create3D(GL_RGBA16F, cells);
+            t->setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        v.irradianceRequested = gl::Texture::create3D(GL_R32UI, cells);
+    }
+    // Every texel must be finite for the NaN/Inf check; lookups never read a cell that was not requested.
+    const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+    const float noSurface[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(v.irradiance.id(), 0, GL_RGBA, GL_FLOAT, none);
+    glClearTexImage(v.irradianceBack.id(), 0, GL_RGBA, GL_FLOAT, none);
+    glClearTexImage(v.irradianceNormal.id(), 0, GL_RGBA, GL_FLOAT, noSurface);
+    const GLuint notRequested = 0;
+    glClearTexImage(v.irradianceRequested.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &notRequested);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellVoxels)
+{
+    if (!m_request) {
+        m_request = frame.shaders.build({"irradiance cache: request cells", {"common/FullScreen.vert", "irradiance/RequestCells.frag"}, {}});
+        m_listRequested = frame.shaders.build({"irradiance cache: list requested cells", {"irradiance/ListRequested.comp"}, {}});
+        m_emptyVao = gl::VertexArray::create();
+    }
+    VoxelVolume& v = frame.voxels;
+    const ScreenTargets& s = frame.screen;
+    const int width = s.indirectDiffuse.width(), height = s.indirectDiffuse.height();
+    if (!m_requestTarget || m_requestWidth != width || m_requestHeight != height) {
+        m_requestTarget = gl::Framebuffer::createEmpty(width, height);
+        m_requestWidth = width;
+        m_requestHeight = height;
+    }
+    m_request.use();
+    m_request.set("uGridOrigin", v.frame.origin);
+    m_request.set("uCellSize", v.frame.extent / float(cells));
+    m_request.set("uCells", cells);
+    m_request.set("uDivisor", s.indirectDivisor);
+    m_request.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+    s.position.bindUnit(0);
+    v.irradianceRequested.bindImage(3, 0, GL_READ_WRITE);
+    m_requestTarget.bind();
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    m_emptyVao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+    v.albedo.bindUnit(0);
+    m_listRequested.use();
+    m_listRequested.set("uCellSize", cellVoxels);
+    m_requested.buildWith(m_listRequested, VoxelRegion::whole(cells));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void VoxelIrradiancePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips && v.directional;
-    gl::Program& program = m_programs[anisotropic ? 1 : 0];
+    gl::Program& program = m_gather[anisotropic ? 1 : 0];
     if (!program) {
         program = frame.shaders.build({anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
-            {"bounce/GatherIrradiance.comp"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
+            {"irradiance/GatherCells.comp"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
     }
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
-    if (!v.irradiance || v.irradiance.width() != cells) {
-        // Cleared once: the gather writes only cells that hold voxels, and lookups read a cell's irradiance only
-        // where its normal says it was gathered, but every texel must be finite for the NaN/Inf check.
-        const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
-        for (gl::Texture* t : {&v.irradiance, &v.irradianceBack, &v.irradianceNormal}) {
-            *t = gl::Texture::create3D(GL_RGBA16F, cells);
-            t->setFilter(GL_NEAREST, GL_NEAREST);
-            glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, none);
-        }
-    }
-    // Cells without voxels get "no surface" (w = 0) in the normals; the gather runs over the others only.
-    m_occupied.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize, &v.irradianceNormal, glm::vec4(0.0f));
+    if (!(v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key) || v.irradiance.width() != cells)
+        forgetCells(v, cells);
+    requestCells(frame, cells, cellSize);
+
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
     ConeTracingSetup::apply(program, frame, anisotropic, true);
     program.set("uResolution", res);
@@ -72,10 +135,11 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     v.irradianceBack.bindImage(1, 0, GL_WRITE_ONLY);
     v.irradianceNormal.bindImage(2, 0, GL_WRITE_ONLY);
     program.use();
-    m_occupied.dispatchOverCells();
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    m_requested.dispatchOverCells();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);
+    m_view = viewOf(frame);
 }
 
 } // namespace vct::render

@@ -2,26 +2,38 @@
 
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
+#include "gl/Framebuffer.h"
 #include "gl/Program.h"
+#include "gl/VertexArray.h"
+
+#include <glm/mat4x4.hpp>
 
 #include <cstdint>
 #include <tuple>
 
 namespace vct::render {
 
+struct VoxelVolume;
+
 /**
- * The irradiance cache (RenderSettings::irradianceCache): every cell of irradianceCellSize^3 voxels that holds a
- * surface traces the diffuse cones from it along its normal (both ways for a wall thinner than a voxel),
- * through the volume the per-pixel cones would see, and stores what they gather (VoxelVolume::irradiance). The cone pass then looks it up per pixel instead of tracing. Runs only when the
- * voxels' light or a gather parameter changed, so a camera move traces no diffuse cones; skipped and its
- * texture released when the cache is off or nothing needs diffuse light.
+ * The irradiance cache (RenderSettings::irradianceCache): cells of irradianceCellSize^3 voxels that hold a
+ * surface trace the diffuse cones from it along its normal (both ways for a wall thinner than a voxel),
+ * through the volume the per-pixel cones would see, and store what they gather (VoxelVolume::irradiance); the
+ * cone pass then looks it up per pixel instead of tracing.
+ *
+ * Only the cells this frame's lookups read are gathered: a pass over the traced pixels requests the eight
+ * cells around each one, and the gather runs over the cells requested for the first time since the voxel
+ * light changed. A frame after a light or voxel change gathers what the camera sees, not the whole scene; a
+ * camera move gathers only the cells that came into view; an unchanged view reuses everything. The image is
+ * the one a gather over every cell would give, since no lookup reads a cell that was not requested.
+ * Skipped and its textures released when the cache is off or nothing needs diffuse light.
  */
 class VoxelIrradiancePass final : public RenderPass {
 public:
     const char* name() const override { return "irradiance cache"; }
     PassDeclaration declare() const override
     {
-        return {{Resource::VoxelMaterials, Resource::VoxelMips}, {Resource::VoxelIrradiance}};
+        return {{Resource::VoxelMaterials, Resource::VoxelMips, Resource::GBuffer}, {Resource::VoxelIrradiance}};
     }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
@@ -34,10 +46,29 @@ private:
     /** Everything the gather depends on besides the radiance itself (bounces: which volume it traces). */
     using GatherKey = std::tuple<bool, int, int, float, float, float, float, int, bool, int>;
     static GatherKey keyOf(const FrameContext& frame);
-    gl::Program m_programs[2]; ///< [0] box-filtered mips, [1] anisotropic
-    OccupiedCellList m_occupied;
+    /** What decides which cells the traced pixels look up: the camera, the pixel grids and the geometry. */
+    struct ViewKey {
+        glm::mat4 viewProjection{0.0f};
+        int width = 0, height = 0, divisor = 0;
+        std::uint64_t staticGeometry = 0, dynamicGeometry = 0;
+        bool operator==(const ViewKey& other) const = default;
+    };
+    static ViewKey viewOf(const FrameContext& frame);
+    /** Fresh textures, nothing gathered: after the voxel light or a gather setting changed. */
+    void forgetCells(VoxelVolume& voxels, int cells);
+    /** Lists the cells the traced pixels look up that hold voxels and were not gathered yet. */
+    void requestCells(FrameContext& frame, int cells, int cellVoxels);
+
+    gl::Program m_gather[2]; ///< [0] box-filtered mips, [1] anisotropic
+    gl::Program m_request;
+    gl::Program m_listRequested;
+    gl::Framebuffer m_requestTarget; ///< no attachments, the traced pixels' size
+    int m_requestWidth = 0, m_requestHeight = 0;
+    gl::VertexArray m_emptyVao;
+    OccupiedCellList m_requested;
     std::uint64_t m_radianceVersion = 0;
     GatherKey m_key{};
+    ViewKey m_view;
 };
 
 } // namespace vct::render

@@ -32,6 +32,7 @@ layout(binding = 13) uniform sampler3D uCellNormal; // w: 0 none, 1 one-sided, 2
 layout(binding = 14) uniform sampler3D uIrradianceBack;
 uniform int uCells;         // cache cells per side
 uniform float uCellSize;    // metres
+#include "common/IrradianceCells.glsl"
 
 // Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does
 // (within 60 degrees, weighted by cos^4), so light from the far side of a wall or a corner's other face does
@@ -39,9 +40,9 @@ uniform float uCellSize;    // metres
 // cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
 bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
 {
-    vec3 g = (p - uGridOrigin) / uCellSize - 0.5;
-    ivec3 base = ivec3(floor(g));
-    vec3 f = g - vec3(base);
+    ivec3 base;
+    vec3 f;
+    irradianceCellBlock(p, uGridOrigin, uCellSize, base, f);
     vec4 sum = vec4(0.0);
     float weightSum = 0.0;
     for (int i = 0; i < 8; ++i) {

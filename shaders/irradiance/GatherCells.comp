@@ -1,8 +1,8 @@
-// The irradiance cache (passes/VoxelIrradiancePass): one gather of the diffuse cones per cell of uCellSize^3
-// voxels that holds a surface. The cones start where a pixel's would, from the mean position of the cell's
-// surface voxels, and what they gather, sum_i w_i L_i, is stored with the ambient visibility in alpha.
-// Irradiance varies slowly over a surface, so a 2^3 cell costs far less than a gather per voxel and pixels
-// interpolate between cells.
+// The irradiance cache (passes/VoxelIrradiancePass): one gather of the diffuse cones per requested cell of
+// uCellSize^3 voxels (irradiance/RequestCells.frag lists the cells this frame's lookups read). The cones start
+// where a pixel's would, from the mean position of the cell's surface voxels, and what they gather,
+// sum_i w_i L_i, is stored with the ambient visibility in alpha. Irradiance varies slowly over a surface, so
+// a 2^3 cell costs far less than a gather per pixel and pixels interpolate between cells.
 // A wall thinner than a voxel has both faces in the same voxels, whose normals then cancel: such a cell
 // gathers both sides of the axis along which its neighbours are emptiest (the wall's normal for walls
 // along the grid axes, within 45 degrees otherwise), so that pixels on either face find their light.
@@ -11,7 +11,7 @@
 #define MAX_CONES 32
 #include "common/ConeTracing.glsl"
 
-// Runs over the cells that hold any voxel (core/OccupiedCellList); the list pass marked the others empty.
+// Runs over the requested cells (core/OccupiedCellList); a requested cell without voxels is marked empty.
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;

@@ -1,0 +1,34 @@
+// Requests the irradiance-cache cells this frame's lookups will read: one fragment per traced pixel (the
+// cone pass's pixel grid) marks the eight cells around its surface point, unless they were gathered already
+// for the current voxel light. irradiance/ListRequested.comp then lists the marked cells that hold voxels for
+// the gather (passes/VoxelIrradiancePass), so cells no traced pixel looks at are never gathered and a camera
+// move gathers only the cells that came into view.
+layout(binding = 0) uniform sampler2D gPosition;
+layout(r32ui, binding = 3) uniform coherent uimage3D uRequested;
+
+uniform vec3 uGridOrigin;
+uniform float uCellSize; // metres
+uniform int uCells;      // cells per side
+uniform int uDivisor;    // one traced pixel stands for uDivisor x uDivisor screen pixels
+uniform ivec3 uFullSize; // full-resolution width, height
+
+#include "common/IrradianceCells.glsl"
+
+void main()
+{
+    ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, uFullSize.xy - 1);
+    vec4 position = texelFetch(gPosition, pixel, 0);
+    if (position.a <= 0.0)
+        return;
+    ivec3 base;
+    vec3 f;
+    irradianceCellBlock(position.xyz, uGridOrigin, uCellSize, base, f);
+    for (int i = 0; i < 8; ++i) {
+        ivec3 c = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(uCells))))
+            continue;
+        // Pixels racing for one cell all store the same value.
+        if (imageLoad(uRequested, c).r == CELL_NOT_REQUESTED)
+            imageStore(uRequested, c, uvec4(CELL_REQUESTED));
+    }
+}
