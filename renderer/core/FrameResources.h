@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/OccupiedCellList.h"
 #include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
 #include "scene/Aabb.h"
@@ -51,6 +52,11 @@ struct VoxelVolume {
     Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
+    /// The occupied voxels as the voxelizer listed them while drawing: every static voxel as of the last full
+    /// static rebuild (a material edit moves no geometry, so the list stays whole) and every dynamic voxel as
+    /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
+    OccupiedCellList staticVoxels;
+    OccupiedCellList dynamicVoxels;
 
     std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance. */

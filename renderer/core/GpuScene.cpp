@@ -81,7 +81,7 @@ void GpuScene::bindMaterialTable(GLuint unit) const
     m_materialTableView.bindUnit(unit);
 }
 
-void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit) const
+void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit, const MaterialFilter& materials) const
 {
     program.use();
     for (std::size_t i = 0; i < m_meshes.size(); ++i) {
@@ -93,6 +93,8 @@ void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedo
         const Material fallback;
         const bool valid = mesh.material >= 0 && std::size_t(mesh.material) < m_scene.materials.size();
         const Material& material = valid ? m_scene.materials[std::size_t(mesh.material)] : fallback;
+        if (materials && !materials(material))
+            continue;
         program.set("uMaterialIndex", valid ? mesh.material : int(m_scene.materials.size()));
         program.set("uModel", mesh.transform);
         program.set("uNormalMatrix", glm::mat4(glm::inverseTranspose(glm::mat3(mesh.transform))));

@@ -6,6 +6,7 @@
 #include "gl/VertexArray.h"
 #include "scene/Scene.h"
 
+#include <functional>
 #include <vector>
 
 namespace vct::render {
@@ -15,6 +16,9 @@ constexpr GLuint kMaterialTableUnit = 3;
 
 /** Which meshes a draw covers: the voxelizer draws static and dynamic meshes into separate layers. */
 enum class MeshFilter { All, Static, Dynamic };
+
+/** A further choice of meshes by their material, so a pass can draw each kind with its own shader variant. */
+using MaterialFilter = std::function<bool(const Material&)>;
 
 /** The scene's meshes, materials and textures on the GPU. Created with a current context. */
 class GpuScene {
@@ -26,7 +30,7 @@ public:
      * shaders/common/Material.glsl read (uModel, uNormalMatrix, material fields) and binding the albedo texture
      * at unit `albedoUnit`.
      */
-    void draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit) const;
+    void draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit, const MaterialFilter& materials = {}) const;
     /**
      * Binds the material table (shaders/common/MaterialTable.glsl) to texture unit `unit`: the per-material
      * values the g-buffer does not store per pixel, found through the material index it does.

@@ -2,6 +2,7 @@
 
 #include "core/ShaderLibrary.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace vct::render {
@@ -21,20 +22,25 @@ void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& al
     buildWith(m_program, region);
 }
 
-void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& region)
+void OccupiedCellList::reset(std::size_t capacity)
 {
     if (!m_dispatch)
         m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    const glm::ivec3 size = region.size();
-    const std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z) * sizeof(std::uint32_t);
-    if (m_cells.size() < capacity)
-        m_cells = gl::Buffer(capacity, nullptr, 0);
-    const std::uint32_t reset[4] = {0, 1, 1, 0};
-    m_dispatch.upload(reset, sizeof reset);
-    if (region.isEmpty())
-        return;
+    const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(std::uint32_t);
+    if (m_cells.size() < bytes)
+        m_cells = gl::Buffer(bytes, nullptr, 0);
+    const std::uint32_t empty[4] = {0, 1, 1, 0};
+    m_dispatch.upload(empty, sizeof empty);
     m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+}
+
+void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& region)
+{
+    const glm::ivec3 size = region.size();
+    reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
+    if (region.isEmpty())
+        return;
     lister.use();
     lister.set("uRegionOrigin", region.lo);
     lister.set("uRegionSize", size);

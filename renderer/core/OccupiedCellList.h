@@ -33,6 +33,12 @@ public:
      * uniforms and bindings already set) runs over @p region and calls appendCell() for the cells to list.
      */
     void buildWith(const gl::Program& lister, const VoxelRegion& region);
+    /**
+     * Empties the list and binds it (storage buffers 0 and 1) for a shader of the caller's, of any stage, to
+     * fill with appendCell() (common/AppendCell.glsl, its uGroupSize set to kGroupSize) with at most
+     * @p capacity cells: the voxelizer lists the voxels it reaches this way while it writes them.
+     */
+    void reset(std::size_t capacity);
     /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells. */
     void dispatchOverCells() const;
 

@@ -90,8 +90,16 @@ void InjectLightPass::execute(FrameContext& frame)
         ++v.radianceVersion;
         return;
     }
-    // The region is cleared to zero radiance; the lighting then writes the occupied voxels only.
-    m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
+    // The region is cleared to zero radiance; the lighting then writes the occupied voxels only. Over the
+    // whole grid the voxelizer's lists name them; a smaller region is searched.
+    const bool whole = region.size() == VoxelRegion::whole(v.frame.resolution).size();
+    if (whole) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearTexImage(v.radiance.id(), 0, GL_RGBA, GL_FLOAT, zero);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    } else {
+        m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
+    }
 
     m_program.use();
     applyLightUniforms(m_program, frame.scene.scene(), frame.shadows);
@@ -103,7 +111,14 @@ void InjectLightPass::execute(FrameContext& frame)
     v.normal.bindUnit(1);
     v.emission.bindUnit(2);
     v.radiance.bindImage(0, 0, GL_WRITE_ONLY);
-    m_occupied.dispatchOverCells();
+    if (whole) {
+        // A voxel both layers reach is lit twice, with the same result.
+        v.staticVoxels.dispatchOverCells();
+        if (frame.scene.hasDynamicMeshes())
+            v.dynamicVoxels.dispatchOverCells();
+    } else {
+        m_occupied.dispatchOverCells();
+    }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++v.radianceVersion;
 }

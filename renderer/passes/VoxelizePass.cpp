@@ -2,6 +2,8 @@
 
 #include "core/FrameContext.h"
 
+#include <utility>
+
 namespace vct::render {
 
 namespace {
@@ -27,10 +29,10 @@ PassDecision VoxelizePass::plan(const FrameContext& frame)
 void VoxelizePass::ensureResources(FrameContext& frame)
 {
     if (!m_voxelize) {
-        m_voxelize = frame.shaders.build(
-            {"voxelize", {"voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag"}, {}});
+        const std::vector<std::string> stages{"voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag"};
+        m_voxelize = frame.shaders.build({"voxelize", stages, {}});
+        m_voxelizeEmissive = frame.shaders.build({"voxelize (emissive)", stages, {"EMISSIVE"}});
         m_resolve = frame.shaders.build({"voxel resolve", {"voxelize/Resolve.comp"}, {}});
-        m_listResolve = frame.shaders.build({"voxel resolve: touched voxels", {"voxelize/ListResolve.comp"}, {}});
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -52,7 +54,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
-void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region)
+void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -63,6 +65,8 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
         const glm::ivec3 size = region.size();
         glClearTexSubImage(v.accumulators.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED, GL_FLOAT, &zero);
     }
+    const glm::ivec3 size = region.size();
+    touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
     glDisable(GL_DEPTH_TEST);
@@ -71,28 +75,34 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
     const bool nvConservative = GLAD_GL_NV_conservative_raster && frame.settings.conservativeVoxelization;
     if (nvConservative)
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
-    m_voxelize.set("uGridOrigin", v.frame.origin);
-    m_voxelize.set("uGridExtent", v.frame.extent);
-    m_voxelize.set("uResolution", res);
-    m_voxelize.set("uRegionLo", region.lo);
-    m_voxelize.set("uRegionHi", region.hi);
-    // With hardware conservative raster the geometry shader need not enlarge triangles itself.
-    m_voxelize.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
-    frame.scene.draw(m_voxelize, dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static, 0);
+    const MeshFilter layer = dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static;
+    for (const bool emissive : {false, true}) {
+        gl::Program& program = emissive ? m_voxelizeEmissive : m_voxelize;
+        program.use();
+        program.set("uGridOrigin", v.frame.origin);
+        program.set("uGridExtent", v.frame.extent);
+        program.set("uResolution", res);
+        program.set("uRegionLo", region.lo);
+        program.set("uRegionHi", region.hi);
+        program.set("uGroupSize", OccupiedCellList::kGroupSize);
+        // With hardware conservative raster the geometry shader need not enlarge triangles itself.
+        program.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
+        frame.scene.draw(program, layer, 0, [emissive](const Material& m) { return m.isEmissive() == emissive; });
+    }
     if (nvConservative)
         glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
+void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
+    const OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     // Untouched voxels take the static layer's values (merging) or none: a copy or a clear of the region, far
-    // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are listed and
-    // averaged.
+    // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are averaged.
     const glm::ivec3 lo = region.lo, size = region.size();
     const gl::Texture* outputs[3] = {intoStaticLayer ? &v.staticAlbedo : &v.albedo,
         intoStaticLayer ? &v.staticNormal : &v.normal, intoStaticLayer ? &v.staticEmission : &v.emission};
@@ -107,13 +117,11 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     v.accumulators.bindImage(0, 0, GL_READ_ONLY);
-    m_listResolve.set("uResolution", v.frame.resolution);
-    m_touched.buildWith(m_listResolve, region);
     for (int i = 0; i < 3; ++i)
         outputs[i]->bindImage(GLuint(1 + i), 0, GL_WRITE_ONLY);
     m_resolve.use();
     m_resolve.set("uResolution", v.frame.resolution);
-    m_touched.dispatchOverCells();
+    touched.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
@@ -132,28 +140,35 @@ void VoxelizePass::execute(FrameContext& frame)
         : staticMaterialChanged                    ? VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin)
                                                    : VoxelRegion{};
     if (!staticRegion.isEmpty()) {
-        accumulate(frame, false, staticRegion);
+        // A material edit keeps the occupied voxels, so the full rebuild's list of them stays whole.
+        OccupiedCellList& touched = staticChanged ? v.staticVoxels : m_editedVoxels;
+        accumulate(frame, false, staticRegion, touched);
         // Without dynamic meshes the static layer is the final one: resolve straight into it.
-        resolve(frame, false, hasDynamic, staticRegion);
+        resolve(frame, false, hasDynamic, staticRegion, touched);
     }
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
     VoxelRegion changed = staticRegion;
     bool dynamicMoved = false;
     if (hasDynamic) {
-        // After a static rebuild every voxel is new; otherwise where the objects were and are now, plus
-        // wherever the static layer changed (the final textures merge both there).
-        const VoxelRegion dynamicRegion = VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin)
-                                              .united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
-        const VoxelRegion region = staticChanged ? whole
-            : m_dynamicVersion != frame.versions.dynamicVoxels() ? dynamicRegion.united(staticRegion)
-                                                                 : staticRegion;
         dynamicMoved = m_dynamicVersion != frame.versions.dynamicVoxels();
-        if (!region.isEmpty()) {
-            accumulate(frame, true, region);
-            resolve(frame, true, false, region);
+        // Always where the objects are now, so their list names all their voxels; where they were too after a
+        // move; wherever the static layer changed (the final textures merge both there). After a static
+        // rebuild the final textures start as a copy of the whole static layer.
+        const VoxelRegion now = VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin);
+        VoxelRegion region = now.united(staticRegion);
+        if (dynamicMoved)
+            region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+        if (staticChanged) {
+            const glm::ivec3 size(v.frame.resolution);
+            for (const auto& [from, to] : {std::pair{&v.staticAlbedo, &v.albedo}, std::pair{&v.staticNormal, &v.normal},
+                     std::pair{&v.staticEmission, &v.emission}})
+                glCopyImageSubData(from->id(), GL_TEXTURE_3D, 0, 0, 0, 0, to->id(), GL_TEXTURE_3D, 0, 0, 0, 0, size.x, size.y, size.z);
+            region = now;
         }
-        changed = region;
+        accumulate(frame, true, region, v.dynamicVoxels);
+        resolve(frame, true, false, region, v.dynamicVoxels);
+        changed = staticChanged ? whole : region;
     }
     v.changedRegion = changed;
     v.onlyDynamicChanged = !staticChanged;

@@ -25,13 +25,15 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
-    void accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region);
-    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region);
+    /** Sums the fragments of one layer's meshes in the region, listing each voxel reached into @p touched. */
+    void accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched);
+    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
+        const OccupiedCellList& touched);
 
     gl::Program m_voxelize;
+    gl::Program m_voxelizeEmissive; ///< the EMISSIVE variant, for meshes whose material emits
     gl::Program m_resolve;
-    gl::Program m_listResolve;
-    OccupiedCellList m_touched; ///< voxels the last accumulation reached, for the averaging pass
+    OccupiedCellList m_editedVoxels; ///< the static voxels a material edit redid
     gl::Framebuffer m_framebuffer;
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;

@@ -1,7 +1,12 @@
 // Adds this fragment's material to every voxel its pixel column crosses; the resolve pass divides by count,
-// so overlapping fragments average instead of the last one winning.
+// so overlapping fragments average instead of the last one winning. The first fragment to reach a voxel lists
+// it (core/OccupiedCellList) for the resolve and, after a full rebuild, for light injection: no pass has to
+// search the grid for the voxels drawn.
+// EMISSIVE: the variant for emissive materials (passes/VoxelizePass). The atomics are most of this pass's
+// cost on llvmpipe, and other materials add nothing to the emission sums, so they skip those three.
 #extension GL_NV_shader_atomic_float : require
 #include "common/VoxelAccumulators.glsl"
+#include "common/AppendCell.glsl"
 
 in vec3 gNormal;
 in vec2 gUv;
@@ -12,7 +17,9 @@ flat in float gDepthSlope;
 uniform int uResolution;
 uniform bool uConservative;
 uniform vec3 uAlbedo;
+#ifdef EMISSIVE
 uniform vec3 uEmission;
+#endif
 layout(binding = 0) uniform sampler2D uAlbedoTexture;
 layout(r32f, binding = 0) uniform coherent image3D uAccumulators;
 uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept: their sums were not cleared
@@ -47,15 +54,18 @@ void main()
         ivec3 voxel = unswizzle(ivec3(ivec2(gl_FragCoord.xy), z), gAxis);
         if (any(lessThan(voxel, uRegionLo)) || any(greaterThanEqual(voxel, uRegionHi)))
             continue;
+        if (imageAtomicAdd(uAccumulators, accumulatorCoord(voxel, ACC_COUNT, uResolution), 1.0) == 0.0)
+            appendCell(voxel);
         add(voxel, ACC_ALBEDO_R, albedo.r);
         add(voxel, ACC_ALBEDO_G, albedo.g);
         add(voxel, ACC_ALBEDO_B, albedo.b);
-        add(voxel, ACC_COUNT, 1.0);
         add(voxel, ACC_NORMAL_X, normal.x);
         add(voxel, ACC_NORMAL_Y, normal.y);
         add(voxel, ACC_NORMAL_Z, normal.z);
+#ifdef EMISSIVE
         add(voxel, ACC_EMISSION_R, uEmission.r);
         add(voxel, ACC_EMISSION_G, uEmission.g);
         add(voxel, ACC_EMISSION_B, uEmission.b);
+#endif
     }
 }

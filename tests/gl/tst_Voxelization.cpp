@@ -182,11 +182,14 @@ void VoxelizationTest::subVoxelSliverNeedsConservativeVoxelization()
 
 void VoxelizationTest::overlappingSurfacesAverage()
 {
-    // Two coplanar quads with different albedos over the same voxels: the voxel holds the mean.
+    // Two coplanar quads with different albedos over the same voxels: the voxel holds the mean. Only the blue
+    // one emits; it is voxelized by the emissive shader variant, the red one by the plain one, and the voxel's
+    // emission is still the mean over both.
     render::Scene scene;
     render::Material red, blue;
     red.albedo = glm::vec3(0.8f, 0.0f, 0.0f);
     blue.albedo = glm::vec3(0.0f, 0.0f, 0.4f);
+    blue.emission = glm::vec3(3.0f, 2.0f, 1.0f);
     scene.materials = {red, blue};
     const auto q = test::quad({4.2f, 4.2f, 7.5f}, {8.8f, 4.2f, 7.5f}, {8.8f, 8.8f, 7.5f}, {4.2f, 8.8f, 7.5f});
     scene.meshes.push_back(test::makeTriangles(q, 0));
@@ -203,6 +206,10 @@ void VoxelizationTest::overlappingSurfacesAverage()
     QVERIFY(std::abs(albedo[i + 0] - 0.4f) < 1.5f / 255.0f);
     QVERIFY(std::abs(albedo[i + 2] - 0.2f) < 1.5f / 255.0f);
     QCOMPARE(albedo[i + 3], 1.0f);
+    const std::vector<float> emission = m_gl.renderer->readVoxels("emission", 0, size);
+    for (int c = 0; c < 3; ++c)
+        QVERIFY2(std::abs(emission[i + std::size_t(c)] - 0.5f * blue.emission[c]) < 1e-3f,
+            qPrintable(QString("emission channel %1: %2").arg(c).arg(emission[i + std::size_t(c)])));
 }
 
 void VoxelizationTest::noGlErrors()
