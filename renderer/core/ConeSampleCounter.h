@@ -13,7 +13,7 @@ namespace vct::render {
  */
 class ConeSampleCounter {
 public:
-    /** The SSBO binding the shader declares for the count (shaders/cone/ConeTrace.frag). */
+    /** The SSBO binding the shader declares for the count (shaders/cone/ConeSampleCount.glsl). */
     static constexpr unsigned kBinding = 0;
 
     ConeSampleCounter();

@@ -84,13 +84,19 @@ struct ScreenTargets {
     gl::Texture position;  ///< rgba32f: world position, a = material index + 1 (GpuScene's table), 0 = no geometry.
     gl::Texture normal;    ///< rgba16f: world shading normal facing the camera, a = 1 front face, 0 back face.
     gl::Texture albedo;    ///< rgba16f: linear albedo (texture applied).
+    /// depth32f + stencil8: the stencil holds each pixel's class (common/PixelClass.glsl), from the g-buffer's
+    /// materials, so the composite runs each shader variant on its own pixels only.
     gl::Texture depth;
     gl::Framebuffer gbuffer;
     gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
     gl::Texture indirectSpecular; ///< rgba16f: radiance along the specular cone.
+    /// rgba32ui: what the composite's upsampling weighs each traced pixel by: the world position of the pixel
+    /// it was traced from (float bits) and its normal (common/OctahedralNormal.glsl), 0 where no surface.
+    gl::Texture indirectGuide;
+    gl::Texture indirectStencil; ///< depth24 + stencil8 at the traced size: the traced pixels' classes
     gl::Framebuffer indirectTarget;
     gl::Texture final;            ///< rgba32f: linear radiance of the frame.
-    gl::Framebuffer finalTarget;
+    gl::Framebuffer finalTarget;  ///< with the g-buffer's depth and stencil, read only</
 };
 
 } // namespace vct::render

@@ -1,12 +1,26 @@
 #include "core/GpuScene.h"
 
+#include "core/PixelClass.h"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace vct::render {
 
 namespace {
+
+Aabb worldBounds(const MeshCluster& cluster, const glm::mat4& transform)
+{
+    Aabb world;
+    for (int corner = 0; corner < 8; ++corner)
+        world.extend(glm::vec3(transform * glm::vec4((corner & 1) ? cluster.bounds.max.x : cluster.bounds.min.x,
+            (corner & 2) ? cluster.bounds.max.y : cluster.bounds.min.y, (corner & 4) ? cluster.bounds.max.z : cluster.bounds.min.z, 1.0f)));
+    return world;
+}
 
 struct Vertex {
     glm::vec3 position;
@@ -27,8 +41,11 @@ GpuScene::GpuScene(const Scene& scene)
             vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
         }
         GpuMesh gpu;
+        const MeshClusters clustered(mesh.positions, mesh.indices);
         gpu.vertices = gl::Buffer(vertices.size() * sizeof(Vertex), vertices.data(), 0);
-        gpu.indices = gl::Buffer(mesh.indices.size() * sizeof(std::uint32_t), mesh.indices.data(), 0);
+        gpu.indices = gl::Buffer(clustered.indices().size() * sizeof(std::uint32_t), clustered.indices().data(), 0);
+        gpu.clusters = clustered.clusters();
+        gpu.surface = std::make_unique<ClosedSurface>(mesh.positions, clustered.indices(), gpu.clusters);
         gpu.vao = gl::VertexArray::create();
         gpu.vao.setAttribute(0, gpu.vertices.id(), 3, sizeof(Vertex), offsetof(Vertex, position));
         gpu.vao.setAttribute(1, gpu.vertices.id(), 3, sizeof(Vertex), offsetof(Vertex, normal));
@@ -81,32 +98,115 @@ void GpuScene::bindMaterialTable(GLuint unit) const
     m_materialTableView.bindUnit(unit);
 }
 
-void GpuScene::draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit, const MaterialFilter& materials) const
+const Material& GpuScene::materialOf(std::size_t index) const
+{
+    static const Material fallback;
+    const int material = m_scene.meshes[index].material;
+    return material >= 0 && std::size_t(material) < m_scene.materials.size() ? m_scene.materials[std::size_t(material)] : fallback;
+}
+
+void GpuScene::bindMesh(const gl::Program& program, std::size_t index, GLuint albedoUnit) const
+{
+    const Mesh& mesh = m_scene.meshes[index];
+    const bool valid = mesh.material >= 0 && std::size_t(mesh.material) < m_scene.materials.size();
+    const Material& material = materialOf(index);
+    program.set("uMaterialIndex", valid ? mesh.material : int(m_scene.materials.size()));
+    program.set("uModel", mesh.transform);
+    program.set("uNormalMatrix", glm::mat4(glm::inverseTranspose(glm::mat3(mesh.transform))));
+    program.set("uAlbedo", material.albedo);
+    program.set("uEmission", material.emission);
+    program.set("uSpecular", material.specular);
+    program.set("uShininess", material.shininess);
+    const bool textured = material.albedoTexture >= 0 && std::size_t(material.albedoTexture) < m_textures.size();
+    (textured ? m_textures[std::size_t(material.albedoTexture)] : m_whiteTexture).bindUnit(albedoUnit);
+    m_meshes[index].vao.bind();
+}
+
+bool GpuScene::cullsBackFaces(std::size_t index, const Viewpoint& from) const
+{
+    const GpuMesh& gpu = m_meshes[index];
+    const glm::mat4& transform = m_scene.meshes[index].transform;
+    if (!gpu.surface->isSolid() || !(glm::determinant(glm::mat3(transform)) > 0.0f))
+        return false; // a mirroring transform turns GL's notion of front faces around
+    if (gpu.cullViewpoint == from.position && gpu.cullTransform == transform)
+        return gpu.cullBack;
+    gpu.cullViewpoint = from.position;
+    gpu.cullTransform = transform;
+    gpu.cullBack = false;
+    // The visible part of each ray starts on the near plane: between the eye and it there must be no surface,
+    // or that start could lie inside a solid the eye is outside of.
+    for (const MeshCluster& cluster : gpu.clusters) {
+        const Aabb world = worldBounds(cluster, transform);
+        if (!(glm::length(glm::clamp(from.position, world.min, world.max) - from.position) > from.nearRadius))
+            return false;
+    }
+    const glm::vec3 local = glm::vec3(glm::inverse(transform) * glm::vec4(from.position, 1.0f));
+    const std::optional<int> winding = gpu.surface->windingNumber(local);
+    gpu.cullBack = winding && *winding == 0;
+    return gpu.cullBack;
+}
+
+void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const
 {
     program.use();
+    struct Run {
+        std::size_t mesh;
+        std::uint32_t firstIndex, indexCount;
+        float distance;
+    };
+    std::vector<Run> runs;
+    const bool perCluster = options.visibleIn || options.from;
     for (std::size_t i = 0; i < m_meshes.size(); ++i) {
         const Mesh& mesh = m_scene.meshes[i];
-        if ((filter == MeshFilter::Static && mesh.dynamic) || (filter == MeshFilter::Dynamic && !mesh.dynamic))
+        if ((options.layer == MeshFilter::Static && mesh.dynamic) || (options.layer == MeshFilter::Dynamic && !mesh.dynamic))
             continue;
         if (m_meshes[i].indexCount == 0)
             continue;
-        const Material fallback;
-        const bool valid = mesh.material >= 0 && std::size_t(mesh.material) < m_scene.materials.size();
-        const Material& material = valid ? m_scene.materials[std::size_t(mesh.material)] : fallback;
-        if (materials && !materials(material))
+        if (options.materials && !options.materials(materialOf(i)))
             continue;
-        program.set("uMaterialIndex", valid ? mesh.material : int(m_scene.materials.size()));
-        program.set("uModel", mesh.transform);
-        program.set("uNormalMatrix", glm::mat4(glm::inverseTranspose(glm::mat3(mesh.transform))));
-        program.set("uAlbedo", material.albedo);
-        program.set("uEmission", material.emission);
-        program.set("uSpecular", material.specular);
-        program.set("uShininess", material.shininess);
-        const bool textured = material.albedoTexture >= 0 && std::size_t(material.albedoTexture) < m_textures.size();
-        (textured ? m_textures[std::size_t(material.albedoTexture)] : m_whiteTexture).bindUnit(albedoUnit);
-        m_meshes[i].vao.bind();
-        glDrawElements(GL_TRIANGLES, m_meshes[i].indexCount, GL_UNSIGNED_INT, nullptr);
+        if (!perCluster) {
+            runs.push_back({i, 0, std::uint32_t(m_meshes[i].indexCount), 0.0f});
+            continue;
+        }
+        for (const MeshCluster& cluster : m_meshes[i].clusters) {
+            const Aabb world = worldBounds(cluster, mesh.transform);
+            if (options.visibleIn && !options.visibleIn->mayContain(world))
+                continue;
+            float distance = 0.0f;
+            if (options.from) {
+                const glm::vec3 eye = options.from->position;
+                distance = glm::length(glm::clamp(eye, world.min, world.max) - eye);
+                if (!std::isfinite(distance))
+                    distance = 0.0f;
+            }
+            // Neighbouring clusters of one mesh drawn in a row become one draw.
+            if (!options.from && !runs.empty() && runs.back().mesh == i
+                && runs.back().firstIndex + runs.back().indexCount == cluster.firstIndex)
+                runs.back().indexCount += cluster.indexCount;
+            else
+                runs.push_back({i, cluster.firstIndex, cluster.indexCount, distance});
+        }
     }
+    if (options.from)
+        std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.distance < b.distance; });
+    std::size_t bound = m_meshes.size();
+    for (const Run& run : runs) {
+        if (run.mesh != bound) {
+            bindMesh(program, run.mesh, albedoUnit);
+            if (options.stencilPixelClass)
+                glStencilFunc(GL_ALWAYS, GLint(pixelClassOf(materialOf(run.mesh))), 0xFF);
+            if (options.from && cullsBackFaces(run.mesh, *options.from)) {
+                glEnable(GL_CULL_FACE);
+                glCullFace(GL_BACK);
+            } else {
+                glDisable(GL_CULL_FACE);
+            }
+            bound = run.mesh;
+        }
+        glDrawElements(GL_TRIANGLES, GLsizei(run.indexCount), GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(std::uintptr_t(run.firstIndex) * sizeof(std::uint32_t)));
+    }
+    glDisable(GL_CULL_FACE);
     glBindVertexArray(0);
 }
 

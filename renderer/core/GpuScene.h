@@ -1,5 +1,8 @@
 #pragma once
 
+#include "core/ClosedSurface.h"
+#include "core/Frustum.h"
+#include "core/MeshClusters.h"
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
@@ -7,6 +10,7 @@
 #include "scene/Scene.h"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace vct::render {
@@ -20,17 +24,37 @@ enum class MeshFilter { All, Static, Dynamic };
 /** A further choice of meshes by their material, so a pass can draw each kind with its own shader variant. */
 using MaterialFilter = std::function<bool(const Material&)>;
 
+/** The eye of a perspective view, and how far from it the corners of its near clip plane lie (metres). */
+struct Viewpoint {
+    glm::vec3 position{0.0f};
+    float nearRadius = 0.0f;
+};
+
+/** What one GpuScene::draw covers and in which order. */
+struct DrawOptions {
+    MeshFilter layer = MeshFilter::All;
+    MaterialFilter materials; ///< empty: every material
+    /// Clusters of triangles wholly outside it are not drawn (core/MeshClusters); null: all are.
+    const Frustum* visibleIn = nullptr;
+    /// With a viewpoint, clusters are drawn nearest first, so early depth testing rejects what they hide, and
+    /// solid meshes (core/ClosedSurface) the view sees from outside are drawn without their back faces.
+    /// Only for depth-tested views whose result does not depend on hidden faces.
+    const Viewpoint* from = nullptr;
+    /// Sets the stencil reference to each mesh's pixel class (core/PixelClass.h) before drawing it.
+    bool stencilPixelClass = false;
+};
+
 /** The scene's meshes, materials and textures on the GPU. Created with a current context. */
 class GpuScene {
 public:
     explicit GpuScene(const Scene& scene);
 
     /**
-     * Draws every mesh passing the filter with `program` bound, setting the per-mesh uniforms the shaders in
+     * Draws every mesh the options select with `program` bound, setting the per-mesh uniforms the shaders in
      * shaders/common/Material.glsl read (uModel, uNormalMatrix, material fields) and binding the albedo texture
      * at unit `albedoUnit`.
      */
-    void draw(const gl::Program& program, MeshFilter filter, GLuint albedoUnit, const MaterialFilter& materials = {}) const;
+    void draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const;
     /**
      * Binds the material table (shaders/common/MaterialTable.glsl) to texture unit `unit`: the per-material
      * values the g-buffer does not store per pixel, found through the material index it does.
@@ -40,16 +64,27 @@ public:
     void setMaterial(std::size_t index, const Material& material);
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
     const Scene& scene() const { return m_scene; }
+    /** The material a mesh is drawn with: its own, or the default one when its index is out of range. */
+    const Material& materialOf(std::size_t mesh) const;
     std::size_t meshCount() const { return m_meshes.size(); }
     bool hasDynamicMeshes() const;
 
 private:
     struct GpuMesh {
         gl::Buffer vertices;
-        gl::Buffer indices;
+        gl::Buffer indices; ///< in cluster order
         gl::VertexArray vao;
         GLsizei indexCount = 0;
+        std::vector<MeshCluster> clusters;
+        std::unique_ptr<ClosedSurface> surface;
+        // The last answer of cullsBackFaces(), for the six faces of a cube map and for repeated frames.
+        mutable glm::vec3 cullViewpoint{0.0f};
+        mutable glm::mat4 cullTransform{0.0f};
+        mutable bool cullBack = false;
     };
+    void bindMesh(const gl::Program& program, std::size_t mesh, GLuint albedoUnit) const;
+    /** Whether back faces of the mesh can be left out of a view from @p from without changing what it sees. */
+    bool cullsBackFaces(std::size_t mesh, const Viewpoint& from) const;
     void uploadMaterialTable();
 
     Scene m_scene; // a copy: transforms and materials change through setters, meshes never

@@ -100,6 +100,7 @@ const std::map<std::string, Field>& fields()
         t["indirect_specular"] = makeField(&RenderSettings::indirectSpecular, "specular cone for glossy materials (on/off)");
         t["ao"] = makeField(&RenderSettings::ambientOcclusion, "ambient occlusion from the diffuse cones (on/off)");
         t["emission"] = makeField(&RenderSettings::emission, "emissive materials (on/off)");
+        t["view_culling"] = makeField(&RenderSettings::viewCulling, "draw only what each view can see, nearest first (on/off; the image is the same)");
         t["shadow_map"] = makeField(&RenderSettings::shadowMapSize, "shadow map texels per side (64..8192)");
         t["exposure"] = makeField(&RenderSettings::exposure, "exposure multiplier for 8-bit output (>0)");
         t["voxel_budget_mb"] = makeField(&RenderSettings::voxelBudgetMiB, "most MiB the voxel textures may take (64..1048576)");

@@ -52,6 +52,10 @@ struct RenderSettings {
     bool ambientOcclusion = true;       ///< Computed from the diffuse cones; shown by view=ao.
     bool emission = true;
     int shadowMapSize = 1024;           ///< Texels per cube face / directional map side.
+    /// The g-buffer and shadow maps draw only the triangle clusters a view can see, nearest first, and leave
+    /// out the back faces of closed meshes seen from outside (core/GpuScene, core/ClosedSurface). The image
+    /// is the same either way; off is for comparison.
+    bool viewCulling = true;
     float exposure = 1.0f;              ///< Multiplier applied before the filmic curve, 8-bit output only.
     DebugView view = DebugView::Final;
     /// Voxel textures may take at most this many MiB; validate() refuses a grid that needs more, instead of

@@ -74,7 +74,7 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
     s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.normal = gl::Texture::create2D(GL_RGBA16F, width, height);
     s.albedo = gl::Texture::create2D(GL_RGBA16F, width, height);
-    s.depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
+    s.depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
     s.gbuffer = gl::Framebuffer::create();
     int i = 0;
     for (const gl::Texture* t : {&s.position, &s.normal, &s.albedo})
@@ -84,13 +84,19 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
     const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
     s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
     s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
+    s.indirectGuide = gl::Texture::create2D(GL_RGBA32UI, lowWidth, lowHeight);
+    s.indirectGuide.setFilter(GL_NEAREST, GL_NEAREST);
+    s.indirectStencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, lowWidth, lowHeight);
     s.indirectTarget = gl::Framebuffer::create();
     s.indirectTarget.attachColor(0, s.indirectDiffuse);
     s.indirectTarget.attachColor(1, s.indirectSpecular);
-    s.indirectTarget.finish(2);
+    s.indirectTarget.attachColor(2, s.indirectGuide);
+    s.indirectTarget.attachDepth(s.indirectStencil);
+    s.indirectTarget.finish(3);
     s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.finalTarget = gl::Framebuffer::create();
     s.finalTarget.attachColor(0, s.final);
+    s.finalTarget.attachDepth(s.depth);
     s.finalTarget.finish(1);
 }
 
@@ -175,7 +181,7 @@ void Renderer::setSettings(const RenderSettings& settings)
     }
     if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
         ++m_state->versions.shading;
-    if (settings.shadowMapSize != m_settings.shadowMapSize) {
+    if (settings.shadowMapSize != m_settings.shadowMapSize || settings.viewCulling != m_settings.viewCulling) {
         ++m_state->versions.lightPlacement;
         ++m_state->versions.lightValues; // every shadow lookup changes: re-inject everything
     }

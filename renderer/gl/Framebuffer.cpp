@@ -1,5 +1,6 @@
 #include "gl/Framebuffer.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -40,7 +41,8 @@ void Framebuffer::attachColorLayer(int index, const Texture& texture, int layer)
 
 void Framebuffer::attachDepth(const Texture& texture, int level)
 {
-    glNamedFramebufferTexture(id(), GL_DEPTH_ATTACHMENT, texture.id(), level);
+    const bool stencil = texture.format() == GL_DEPTH32F_STENCIL8 || texture.format() == GL_DEPTH24_STENCIL8;
+    glNamedFramebufferTexture(id(), stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, texture.id(), level);
 }
 
 void Framebuffer::attachDepthLayer(const Texture& texture, int layer)
@@ -60,6 +62,17 @@ void Framebuffer::finish(int colorCount)
     const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("framebuffer incomplete, status 0x" + std::to_string(status));
+}
+
+void Framebuffer::drawTo(std::initializer_list<int> colors)
+{
+    GLenum buffers[8] = {GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE};
+    int count = 0;
+    for (const int c : colors) {
+        buffers[c] = GLenum(GL_COLOR_ATTACHMENT0 + c);
+        count = std::max(count, c + 1);
+    }
+    glNamedFramebufferDrawBuffers(id(), count, buffers);
 }
 
 void Framebuffer::bind() const

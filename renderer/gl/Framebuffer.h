@@ -3,6 +3,7 @@
 #include "gl/Handle.h"
 #include "gl/Texture.h"
 
+#include <initializer_list>
 #include <vector>
 
 namespace vct::gl {
@@ -20,10 +21,13 @@ public:
     explicit operator bool() const { return bool(m_handle); }
     void attachColor(int index, const Texture& texture, int level = 0);
     void attachColorLayer(int index, const Texture& texture, int layer);
+    /** Depth, or depth and stencil for a depth-stencil format. */
     void attachDepth(const Texture& texture, int level = 0);
     void attachDepthLayer(const Texture& texture, int layer);
     /** Enables draw buffers 0..count-1 and throws std::runtime_error if incomplete. */
     void finish(int colorCount);
+    /** Draws only into the listed color attachments (by index), the others set to GL_NONE. */
+    void drawTo(std::initializer_list<int> colors);
     void bind() const;
 
 private:

@@ -21,12 +21,15 @@ std::size_t bytesPerTexel(GLenum internalFormat)
     case GL_R32UI:
     case GL_DEPTH_COMPONENT32F:
     case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH24_STENCIL8:
     case GL_RGB10_A2:
         return 4;
     case GL_RGBA16F:
     case GL_RG32F:
+    case GL_DEPTH32F_STENCIL8: // 32-bit depth, 8-bit stencil, 24 bits unused
         return 8;
     case GL_RGBA32F:
+    case GL_RGBA32UI:
         return 16;
     default:
         throw std::logic_error("bytesPerTexel: unknown internal format");

@@ -3,12 +3,14 @@
 #include "core/FrameContext.h"
 #include "core/FrameRules.h"
 #include "core/LightUniforms.h"
+#include "core/PixelClass.h"
 
 #include <algorithm>
+#include <set>
 
 namespace vct::render {
 
-std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame)
+std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame, std::uint32_t pixelClass)
 {
     const RenderSettings& settings = frame.settings;
     const Scene& scene = frame.scene.scene();
@@ -25,7 +27,9 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
         defines.emplace_back("INDIRECT_SPECULAR");
     if (FrameRules::ambientOcclusionNeeded(frame))
         defines.emplace_back("AO_AVAILABLE");
-    if (FrameRules::emissionNeeded(frame))
+    if ((pixelClass & PIXEL_GLOSSY) != 0)
+        defines.emplace_back("GLOSSY");
+    if ((pixelClass & PIXEL_EMISSIVE) != 0 && FrameRules::emissionNeeded(frame))
         defines.emplace_back("EMISSION");
     if (frame.screen.indirectDivisor > 1)
         defines.emplace_back("UPSAMPLE");
@@ -36,28 +40,43 @@ void CompositePass::execute(FrameContext& frame)
 {
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
-    std::vector<std::string> defines = variantDefines(frame);
-    gl::Program& program = m_programs[defines];
-    if (!program)
-        program = frame.shaders.build({"composite", {"common/FullScreen.vert", "composite/Composite.frag"}, std::move(defines)});
     ScreenTargets& s = frame.screen;
-    program.use();
-    applyLightUniforms(program, frame.scene.scene(), frame.shadows);
-    program.set("uCameraPosition", frame.camera.position);
-    program.set("uDivisor", s.indirectDivisor);
-    // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
-    program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
     s.position.bindUnit(0);
     s.normal.bindUnit(1);
     s.albedo.bindUnit(2);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     s.indirectDiffuse.bindUnit(5);
     s.indirectSpecular.bindUnit(6);
+    s.indirectGuide.bindUnit(7);
     s.finalTarget.bind();
     glViewport(0, 0, s.width, s.height);
+    const float sky[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearNamedFramebufferfv(s.finalTarget.id(), GL_COLOR, 0, sky);
     glDisable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0x00);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     m_emptyVao.bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const Scene& scene = frame.scene.scene();
+    std::set<std::uint32_t> classes;
+    for (std::size_t mesh = 0; mesh < frame.scene.meshCount(); ++mesh)
+        classes.insert(pixelClassOf(frame.scene.materialOf(mesh)));
+    for (const std::uint32_t pixelClass : classes) {
+        std::vector<std::string> defines = variantDefines(frame, pixelClass);
+        gl::Program& program = m_programs[defines];
+        if (!program)
+            program = frame.shaders.build({"composite", {"common/FullScreen.vert", "composite/Composite.frag"}, std::move(defines)});
+        program.use();
+        applyLightUniforms(program, scene, frame.shadows);
+        program.set("uCameraPosition", frame.camera.position);
+        program.set("uDivisor", s.indirectDivisor);
+        // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
+        program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
+        glStencilFunc(GL_EQUAL, GLint(pixelClass), 0xFF);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glStencilMask(0xFF);
+    glDisable(GL_STENCIL_TEST);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

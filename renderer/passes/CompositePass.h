@@ -4,13 +4,18 @@
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace vct::render {
 
-/** Sums emission, shadowed direct light and the indirect terms into the frame's linear radiance. */
+/**
+ * Sums emission, shadowed direct light and the indirect terms into the frame's linear radiance: one draw per
+ * pixel class the scene's meshes have (common/PixelClass.glsl), each with the shader variant for that class and
+ * a stencil test that keeps it to its own pixels.
+ */
 class CompositePass final : public RenderPass {
 public:
     const char* name() const override { return "composite"; }
@@ -23,8 +28,8 @@ public:
     void invalidate() override {}
 
 private:
-    /** The compile-time shape of this frame's composite (shaders/composite/Composite.frag). */
-    static std::vector<std::string> variantDefines(const FrameContext& frame);
+    /** The compile-time shape of this frame's composite for pixels of @p pixelClass (shaders/composite/Composite.frag). */
+    static std::vector<std::string> variantDefines(const FrameContext& frame, std::uint32_t pixelClass);
 
     std::map<std::vector<std::string>, gl::Program> m_programs; // built on first use of each frame shape
     gl::VertexArray m_emptyVao;

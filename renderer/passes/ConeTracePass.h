@@ -6,7 +6,14 @@
 
 namespace vct::render {
 
-/** Per-pixel diffuse cones (indirect diffuse and ambient occlusion) and the specular cone for glossy pixels. */
+/**
+ * Indirect light of the traced pixels (one per indirect-divisor block of the screen), in up to three draws:
+ * one classifies every traced pixel into stencil classes (common/PixelClass.glsl), writes the composite's
+ * upsampling guide and takes diffuse light from the irradiance cache where it can; then the diffuse cones run
+ * only on the pixels the cache could not serve (all of them without a cache), and the specular cone only on
+ * glossy ones. llvmpipe runs all of a fragment shader's code on every pixel it is drawn on, branches or not:
+ * the early stencil test is what keeps each shader off the pixels that do not need it.
+ */
 class ConeTracePass final : public RenderPass {
 public:
     const char* name() const override { return "cone trace"; }
@@ -19,8 +26,11 @@ public:
     void invalidate() override {}
 
 private:
-    /// Shader variants, [anisotropic mips][COUNT_SAMPLES for vct-bench perf][irradiance cache lookup].
-    gl::Program m_programs[2][2][2];
+    /// [irradiance cache lookup]
+    gl::Program m_classify[2];
+    /// [anisotropic mips][COUNT_SAMPLES for vct-bench perf]
+    gl::Program m_diffuse[2][2];
+    gl::Program m_specular[2][2];
     gl::VertexArray m_emptyVao;
 };
 

@@ -2,12 +2,18 @@
 
 #include "core/FrameContext.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
 namespace vct::render {
 
 void GBufferPass::execute(FrameContext& frame)
 {
-    if (!m_program)
-        m_program = frame.shaders.build({"g-buffer", {"gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag"}, {}});
+    if (!m_programs[0]) {
+        m_programs[0] = frame.shaders.build({"g-buffer", {"gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag"}, {}});
+        m_programs[1] = frame.shaders.build({"g-buffer (textured)", {"gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag"}, {"TEXTURED"}});
+    }
     ScreenTargets& s = frame.screen;
     s.gbuffer.bind();
     glViewport(0, 0, s.width, s.height);
@@ -17,10 +23,33 @@ void GBufferPass::execute(FrameContext& frame)
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 3; ++i)
         glClearNamedFramebufferfv(s.gbuffer.id(), GL_COLOR, i, zero);
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(s.gbuffer.id(), GL_DEPTH, 0, &one);
-    m_program.set("uViewProjection", frame.projection * frame.view);
-    frame.scene.draw(m_program, MeshFilter::All, 0);
+    // Depth 1 and stencil 0: no surface, until the nearest one writes its pixel class.
+    glClearNamedFramebufferfi(s.gbuffer.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    const glm::mat4 viewProjection = frame.projection * frame.view;
+    // Only what the camera can see, nearest first, and solids without the faces they turn away: early depth
+    // testing then rejects most hidden fragments before they are shaded.
+    // Relative to the eye: the world matrix loses the far plane's precision in a scene far from the origin.
+    const Camera& camera = frame.camera;
+    const Frustum view(frame.projection * glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up), camera.position);
+    const glm::mat4& p = frame.projection;
+    const float nearPlane = p[3][2] / (p[2][2] - 1.0f); // glm::perspective's matrix, solved for its near plane
+    const Viewpoint eye{camera.position,
+        1.01f * nearPlane * std::sqrt(1.0f + 1.0f / (p[0][0] * p[0][0]) + 1.0f / (p[1][1] * p[1][1]))};
+    DrawOptions options;
+    if (frame.settings.viewCulling) {
+        options.visibleIn = &view;
+        options.from = &eye;
+    }
+    options.stencilPixelClass = true;
+    for (const bool textured : {false, true}) {
+        m_programs[textured].set("uViewProjection", viewProjection);
+        options.materials = [textured](const Material& m) { return (m.albedoTexture >= 0) == textured; };
+        frame.scene.draw(m_programs[textured], options, 0);
+    }
+    glDisable(GL_STENCIL_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

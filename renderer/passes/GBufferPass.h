@@ -15,7 +15,7 @@ public:
     void invalidate() override {}
 
 private:
-    gl::Program m_program;
+    gl::Program m_programs[2]; ///< [0] untextured materials, [1] TEXTURED
 };
 
 } // namespace vct::render

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace vct::render {
 
@@ -79,6 +80,7 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
         m_program.set("uOrigin", light.position);
+        const Viewpoint eye{light.position, 1.01f * shadows.pointNear * std::sqrt(3.0f)}; // 90-degree faces
         for (int face = 0; face < 6; ++face) {
             shadows.framebuffer.attachDepthLayer(point, 6 * i + face);
             shadows.framebuffer.finish(0);
@@ -88,7 +90,15 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
                 continue;
             const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceDirection[face], kFaceUp[face]);
             m_program.set("uViewProjection", cubeProjection * view);
-            frame.scene.draw(m_program, filter, 0);
+            // A face sees about a sixth of the scene around its light: draw only the clusters it can see.
+            const Frustum faceView(cubeProjection * view, light.position);
+            DrawOptions options;
+            options.layer = filter;
+            if (frame.settings.viewCulling) {
+                options.visibleIn = &faceView;
+                options.from = &eye;
+            }
+            frame.scene.draw(m_program, options, 0);
         }
     }
     m_program.set("uOrigin", glm::vec3(0.0f));
@@ -100,7 +110,12 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
         if (!scene.directionalLights[std::size_t(i)].castsShadows)
             continue;
         m_program.set("uViewProjection", shadows.directionalMatrices[std::size_t(i)]);
-        frame.scene.draw(m_program, filter, 0);
+        const Frustum lightView(shadows.directionalMatrices[std::size_t(i)], glm::vec3(0.0f));
+        DrawOptions options;
+        options.layer = filter;
+        if (frame.settings.viewCulling)
+            options.visibleIn = &lightView;
+        frame.scene.draw(m_program, options, 0);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -88,7 +88,10 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
         program.set("uGroupSize", OccupiedCellList::kGroupSize);
         // With hardware conservative raster the geometry shader need not enlarge triangles itself.
         program.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
-        frame.scene.draw(program, layer, 0, [emissive](const Material& m) { return m.isEmissive() == emissive; });
+        DrawOptions options;
+        options.layer = layer;
+        options.materials = [emissive](const Material& m) { return m.isEmissive() == emissive; };
+        frame.scene.draw(program, options, 0);
     }
     if (nvConservative)
         glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);

@@ -1,5 +1,6 @@
-// Tracing one cone through the radiance volume, shared by the per-pixel cone pass (cone/ConeTrace.frag) and
-// the per-voxel bounce gather (bounce/GatherBounce.comp), so both see the volume the same way.
+// Tracing one cone through the radiance volume, shared by the per-pixel cone passes (cone/DiffuseCones.frag,
+// cone/SpecularCone.frag), the irradiance cache's gather and the per-voxel bounce gather
+// (bounce/GatherBounce.comp), so all see the volume the same way.
 // A shader that counts texture fetches defines COUNT_FETCHES(n) before including this file.
 #ifndef COUNT_FETCHES
 #define COUNT_FETCHES(n)

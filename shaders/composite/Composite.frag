@@ -1,24 +1,31 @@
 // The frame's linear radiance: emission + shadowed direct light + albedo * indirect diffuse
 // + specular * indirect specular. Tone mapping happens later, only for 8-bit output.
 //
-// A compile-time variant per frame shape (passes/CompositePass): light counts, which terms are on, the debug
-// view and whether the indirect light needs upsampling are defines, not uniforms, so each frame's shader
-// carries only the code that frame uses (llvmpipe pays for code behind a uniform branch; see
-// common/ConeTracing.glsl on the anisotropic variant).
+// A compile-time variant per frame shape and pixel class (passes/CompositePass): light counts, which terms are
+// on, the debug view, whether the indirect light needs upsampling and what the pixel's material has are
+// defines, not uniforms, so each shader carries only the code its pixels use (llvmpipe pays for code behind
+// any branch; see common/PixelClass.glsl). Each variant is drawn with a stencil test for its pixel class;
+// pixels with no surface keep the cleared black.
 //   POINT_LIGHT_COUNT, DIRECTIONAL_LIGHT_COUNT  analytic lights (common/Lights.glsl)
-//   DIRECT, INDIRECT_DIFFUSE, INDIRECT_SPECULAR, EMISSION  the terms present this frame
+//   DIRECT, INDIRECT_DIFFUSE, INDIRECT_SPECULAR  the terms present this frame
+//   GLOSSY    the material has a specular lobe (PIXEL_GLOSSY)
+//   EMISSION  the material emits (PIXEL_EMISSIVE) and emission is on
 //   UPSAMPLE  the indirect targets are 1/uDivisor of the screen per axis
 //   VIEW      RenderSettings::view (0 = the final image)
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
+#include "common/OctahedralNormal.glsl"
+
+layout(early_fragment_tests) in;
 
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
 layout(binding = 2) uniform sampler2D gAlbedo;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular;
+layout(binding = 7) uniform usampler2D uIndirectGuide; // ScreenTargets::indirectGuide
 
 uniform vec3 uCameraPosition;
 uniform float uShadowOffset; // metres along the normal for shadow lookups
@@ -31,12 +38,11 @@ uniform int uDivisor;
 #ifdef NEEDS_INDIRECT
 #ifdef UPSAMPLE
 // Joint bilateral upsampling: the four nearest traced pixels, weighted bilinearly and by how well their
-// surface (the full-resolution pixel each was traced from) matches this pixel's plane and normal, so light
-// does not bleed across depth or orientation edges. Specular is only fetched where this pixel is glossy.
-void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, out vec3 specular)
+// surface (the full-resolution pixel each was traced from, kept in the guide) matches this pixel's plane and
+// normal, so light does not bleed across depth or orientation edges.
+void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
 {
     ivec2 lowSize = textureSize(uIndirectDiffuse, 0);
-    ivec2 fullSize = textureSize(gPosition, 0);
     vec2 low = (vec2(pixel) + 0.5) / float(uDivisor) - 0.5;
     ivec2 base = ivec2(floor(low));
     vec2 f = low - vec2(base);
@@ -49,14 +55,14 @@ void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, o
     for (int i = 0; i < 4; ++i) {
         ivec2 offset = ivec2(i & 1, i >> 1);
         ivec2 q = clamp(base + offset, ivec2(0), lowSize - 1);
-        ivec2 source = min(q * uDivisor + uDivisor / 2, fullSize - 1);
-        vec4 qp = texelFetch(gPosition, source, 0);
-        vec3 qn = texelFetch(gNormal, source, 0).xyz;
+        uvec4 guide = texelFetch(uIndirectGuide, q, 0);
+        vec3 qp = uintBitsToFloat(guide.xyz);
+        vec3 qn = unpackNormal(guide.w);
         float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
         float c = max(dot(qn, n), 0.0);
         c *= c;
         c *= c; // cos^8 without pow: llvmpipe expands pow to exp2(log2) per lane
-        float similarity = qp.a > 0.0 ? c * c * exp(-abs(dot(qp.xyz - p, n)) * planeScale) : 0.0;
+        float similarity = guide.w != 0u ? c * c * exp(-abs(dot(qp - p, n)) * planeScale) : 0.0;
         taps[i] = q;
         weights[i] = (bilinear + 1e-3) * similarity;
         weightSum += weights[i];
@@ -75,22 +81,19 @@ void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, o
         diffuse += weights[i] * texelFetch(uIndirectDiffuse, taps[i], 0);
     diffuse /= weightSum;
     specular = vec3(0.0);
-#ifdef INDIRECT_SPECULAR
-    if (glossy) {
-        for (int i = 0; i < 4; ++i)
-            specular += weights[i] * texelFetch(uIndirectSpecular, taps[i], 0).rgb;
-        specular /= weightSum;
-    }
+#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
+    for (int i = 0; i < 4; ++i)
+        specular += weights[i] * texelFetch(uIndirectSpecular, taps[i], 0).rgb;
+    specular /= weightSum;
 #endif
 }
 #else
-void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, bool glossy, out vec4 diffuse, out vec3 specular)
+void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
 {
     diffuse = texelFetch(uIndirectDiffuse, pixel, 0);
     specular = vec3(0.0);
-#ifdef INDIRECT_SPECULAR
-    if (glossy)
-        specular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
+#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
+    specular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
 #endif
 }
 #endif
@@ -102,31 +105,32 @@ const float kPi = 3.14159265358979;
 
 void main()
 {
+    // The stencil test let only pixels of this variant's class through: there is a surface here.
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(gPosition, pixel, 0);
-    if (position.a <= 0.0) {
-        oRadiance = vec4(0.0, 0.0, 0.0, 1.0);
-        return;
-    }
     vec3 p = position.xyz;
     vec4 normalFacing = texelFetch(gNormal, pixel, 0);
     vec3 n = normalFacing.xyz;
-    MaterialEntry material = materialAt(position.a);
-    float shininess = material.specularShininess.w;
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+#if defined(GLOSSY) || defined(EMISSION)
+    MaterialEntry material = materialAt(position.a);
+#endif
+#ifdef GLOSSY
+    float shininess = material.specularShininess.w;
     vec3 specular = material.specularShininess.rgb;
-    bool glossy = shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0;
+#endif
 
     vec4 indirectDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
     vec3 indirectSpecular = vec3(0.0);
 #ifdef NEEDS_INDIRECT
-    fetchIndirect(pixel, p, n, glossy, indirectDiffuse, indirectSpecular);
+    fetchIndirect(pixel, p, n, indirectDiffuse, indirectSpecular);
 #endif
 
     vec3 direct = vec3(0.0);
 #if defined(DIRECT) && (VIEW == 0 || VIEW == 1)
-    vec3 toEye = normalize(uCameraPosition - p);
-    vec3 mirror = reflect(-toEye, n);
+#ifdef GLOSSY
+    vec3 mirror = reflect(normalize(p - uCameraPosition), n);
+#endif
     for (int i = 0; i < lightCount(); ++i) {
         vec3 toLight = lightDirection(i, p);
         float cosTheta = dot(n, toLight);
@@ -134,8 +138,9 @@ void main()
             continue;
         vec3 irradiance = lightIrradiance(i, p, p + n * uShadowOffset) * cosTheta;
         vec3 brdf = albedo / kPi;
-        if (glossy) // normalised modified Phong
-            brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
+#ifdef GLOSSY // normalised modified Phong
+        brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
+#endif
         direct += brdf * irradiance;
     }
 #endif
@@ -144,8 +149,8 @@ void main()
     diffuseIndirect = albedo * indirectDiffuse.rgb;
 #endif
     vec3 specularIndirect = vec3(0.0);
-#ifdef INDIRECT_SPECULAR
-    specularIndirect = glossy ? specular * indirectSpecular : vec3(0.0);
+#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
+    specularIndirect = specular * indirectSpecular;
 #endif
     vec3 emitted = vec3(0.0);
 #ifdef EMISSION

@@ -1,0 +1,48 @@
+// The irradiance cache's lookup (passes/VoxelIrradiancePass): the diffuse cones gathered once per surface cell
+// along its own normal, interpolated for a pixel.
+// Needs uGridOrigin (metres) declared before it.
+layout(binding = 12) uniform sampler3D uIrradiance;
+layout(binding = 13) uniform sampler3D uCellNormal; // w: 0 none, 1 one-sided, 2 two-sided
+layout(binding = 14) uniform sampler3D uIrradianceBack;
+uniform int uCells;         // cache cells per side
+uniform float uCellSize;    // metres
+#include "common/IrradianceCells.glsl"
+
+// Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does
+// (within 60 degrees, weighted by cos^4), so light from the far side of a wall or a corner's other face does
+// not bleed in; a two-sided cell offers whichever of its sides faces the pixel. The small floor on the trilinear weight lets a lone
+// matching cell count. False when no cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
+bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
+{
+    ivec3 base;
+    vec3 f;
+    irradianceCellBlock(p, uGridOrigin, uCellSize, base, f);
+    vec4 sum = vec4(0.0);
+    float weightSum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        ivec3 corner = ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        ivec3 c = base + corner;
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(uCells))))
+            continue;
+        vec4 cellNormal = texelFetch(uCellNormal, c, 0);
+        if (cellNormal.w <= 0.0)
+            continue;
+        float agreement = dot(cellNormal.xyz, n);
+        bool back = cellNormal.w > 1.5 && agreement < 0.0;
+        agreement = abs(agreement);
+        if (agreement < 0.5)
+            continue;
+        vec4 cached = back ? texelFetch(uIrradianceBack, c, 0) : texelFetch(uIrradiance, c, 0);
+        if (cached.a < 0.0)
+            continue;
+        vec3 t = mix(vec3(1.0) - f, f, vec3(corner));
+        float a2 = agreement * agreement;
+        float w = (t.x * t.y * t.z + 1e-3) * a2 * a2;
+        sum += w * cached;
+        weightSum += w;
+    }
+    if (weightSum <= 0.0)
+        return false;
+    result = sum / weightSum;
+    return true;
+}

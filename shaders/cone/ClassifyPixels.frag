@@ -1,0 +1,53 @@
+// The first of the cone passes over the traced pixels (passes/ConeTracePass): sorts them into stencil classes
+// (common/PixelClass.glsl) so that the cone shaders run only where they are needed, writes the composite's
+// upsampling guide, and with the irradiance cache (IRRADIANCE_CACHE) takes indirect diffuse light from it.
+// A pixel the cache cannot serve, or every pixel without a cache, is marked PIXEL_NEEDS_CONES;
+// cone/DiffuseCones.frag then traces those, and cone/SpecularCone.frag the PIXEL_GLOSSY ones.
+#extension GL_ARB_shader_stencil_export : require
+#include "common/PixelClass.glsl"
+#include "common/OctahedralNormal.glsl"
+#define MATERIAL_TABLE_UNIT 3
+#include "common/MaterialTable.glsl"
+#include "cone/TracedPixel.glsl"
+
+layout(binding = 0) uniform sampler2D gPosition;
+layout(binding = 1) uniform sampler2D gNormal;
+
+uniform vec3 uGridOrigin;
+uniform bool uDiffuseEnabled;
+uniform bool uSpecularEnabled;
+
+#ifdef IRRADIANCE_CACHE
+#include "common/IrradianceLookup.glsl"
+#endif
+
+layout(location = 0) out vec4 oDiffuse; // rgb: sum_i w_i L_i, a: ambient visibility
+layout(location = 2) out uvec4 oGuide;  // xyz: the traced pixel's world position (float bits), w: its normal, 0 = none
+
+void main()
+{
+    ivec2 pixel = tracedPixel();
+    vec4 position = texelFetch(gPosition, pixel, 0);
+    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    bool geometry = position.a > 0.0;
+    oDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
+    uint pixelClass = geometry ? PIXEL_GEOMETRY : 0u;
+    MaterialEntry material = materialAt(max(position.a, 1.0));
+    float shininess = material.specularShininess.w;
+    vec3 specular = material.specularShininess.rgb;
+    if (geometry && uSpecularEnabled && shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0)
+        pixelClass |= PIXEL_GLOSSY;
+    bool needsCones = geometry && uDiffuseEnabled;
+#ifdef IRRADIANCE_CACHE
+    vec4 cached;
+    if (needsCones && lookUpIrradiance(position.xyz, n, cached)) {
+        oDiffuse = cached;
+        needsCones = false;
+    }
+#endif
+    if (needsCones)
+        pixelClass |= PIXEL_NEEDS_CONES;
+    // The lowest bit set keeps a geometry pixel's guide from reading as none; it moves the normal by 3e-5.
+    oGuide = geometry ? uvec4(floatBitsToUint(position.xyz), packNormal(n) | 1u) : uvec4(0u);
+    gl_FragStencilRefARB = int(pixelClass);
+}

@@ -1,0 +1,24 @@
+// Indirect diffuse light of a traced pixel the irradiance cache does not serve (stencil PIXEL_NEEDS_CONES, set
+// by cone/ClassifyPixels.frag): the diffuse cones over its hemisphere, whose weights split the cosine lobe and
+// sum to one, with ambient occlusion in alpha.
+#include "common/ConeMath.glsl"
+#include "cone/ConeSampleCount.glsl"
+#define MAX_CONES 32
+#include "common/ConeTracing.glsl"
+#include "cone/TracedPixel.glsl"
+
+layout(binding = 0) uniform sampler2D gPosition;
+layout(binding = 1) uniform sampler2D gNormal;
+
+uniform float uConeOffset; // metres along the normal
+
+layout(location = 0) out vec4 oDiffuse; // rgb: sum_i w_i L_i, a: ambient visibility
+
+void main()
+{
+    ivec2 pixel = tracedPixel();
+    vec3 p = texelFetch(gPosition, pixel, 0).xyz;
+    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    oDiffuse = gatherDiffuse(p + n * uConeOffset, n);
+    countSamples();
+}

@@ -1,0 +1,32 @@
+// Indirect specular light of a glossy traced pixel (stencil PIXEL_GLOSSY, set by cone/ClassifyPixels.frag):
+// one cone along the mirrored view direction, as wide as the material's Phong lobe.
+#include "common/ConeMath.glsl"
+#include "cone/ConeSampleCount.glsl"
+#include "common/ConeTracing.glsl"
+#include "cone/TracedPixel.glsl"
+#define MATERIAL_TABLE_UNIT 3
+#include "common/MaterialTable.glsl"
+
+layout(binding = 0) uniform sampler2D gPosition;
+layout(binding = 1) uniform sampler2D gNormal;
+
+uniform float uConeOffset; // metres along the normal
+uniform float uSpecularMinTanHalf;
+uniform vec3 uCameraPosition;
+
+layout(location = 1) out vec4 oSpecular;
+
+void main()
+{
+    ivec2 pixel = tracedPixel();
+    vec4 position = texelFetch(gPosition, pixel, 0);
+    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    float shininess = materialAt(position.a).specularShininess.w;
+    vec3 mirror = reflect(normalize(position.xyz - uCameraPosition), n);
+    // Half-angle where the Phong lobe cos^n falls to one half, never narrower than the set minimum.
+    float lobeHalf = acos(pow(0.5, 1.0 / max(shininess, 1e-3)));
+    float tanHalf = max(tan(min(lobeHalf, 1.5)), uSpecularMinTanHalf);
+    float unused;
+    oSpecular = vec4(traceCone(position.xyz + n * uConeOffset, mirror, tanHalf, unused).rgb, 1.0);
+    countSamples();
+}
