@@ -31,10 +31,10 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
         m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     std::vector<NonFiniteCount> counts;
-    // 8-bit targets cannot hold NaN or Inf, so only float ones are checked.
+    // 8-bit and integer targets cannot hold NaN or Inf, so only float ones are checked (the g-buffer's packed
+    // normal is made finite before it is packed).
     const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
-        {"g-buffer position", &screen.position}, {"g-buffer normal", &screen.normal},
-        {"g-buffer albedo", &screen.albedo}, {"indirect diffuse", &screen.indirectDiffuse},
+        {"g-buffer position", &screen.position}, {"indirect diffuse", &screen.indirectDiffuse},
         {"indirect specular", &screen.indirectSpecular}, {"voxel normal", &voxels.normal},
         {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};
     for (const auto& [name, texture] : targets)

@@ -52,6 +52,10 @@ struct VoxelVolume {
     Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
+    /// The radianceVersion levels 1..N of `radiance` were filtered for. With anisotropic mips cones read only
+    /// level 0 and the directional chains, so the box levels are filtered only when something looks at them
+    /// (the voxel inspector, readVoxels, the NaN check: Renderer::ensureBoxMips).
+    std::uint64_t boxMipsVersion = 0;
     /// The occupied voxels as the voxelizer listed them while drawing: every static voxel as of the last full
     /// static rebuild (a material edit moves no geometry, so the list stays whole) and every dynamic voxel as
     /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
@@ -82,8 +86,9 @@ struct ScreenTargets {
     int width = 0, height = 0;
     int indirectDivisor = 1; ///< the indirect targets are width/divisor x height/divisor (rounded up)
     gl::Texture position;  ///< rgba32f: world position, a = material index + 1 (GpuScene's table), 0 = no geometry.
-    gl::Texture normal;    ///< rgba16f: world shading normal facing the camera, a = 1 front face, 0 back face.
-    gl::Texture albedo;    ///< rgba16f: linear albedo (texture applied).
+    /// rgba32ui: shading normal facing the camera, linear albedo (texture applied) and the front-face bit, packed
+    /// (shaders/common/GBufferSurface.glsl).
+    gl::Texture surface;
     /// depth32f + stencil8: the stencil holds each pixel's class (common/PixelClass.glsl), from the g-buffer's
     /// materials, so the composite runs each shader variant on its own pixels only.
     gl::Texture depth;

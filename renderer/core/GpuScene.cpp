@@ -22,6 +22,28 @@ Aabb worldBounds(const MeshCluster& cluster, const glm::mat4& transform)
     return world;
 }
 
+// For vertices without a usable normal: the normal of a triangle that uses them, +z where none is usable.
+std::vector<glm::vec3> fallbackNormals(const Mesh& mesh)
+{
+    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    std::vector<bool> found(mesh.positions.size(), false);
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        if (a >= normals.size() || b >= normals.size() || c >= normals.size())
+            continue;
+        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        const float length = glm::length(n);
+        if (!std::isfinite(length) || !(length > 0.0f))
+            continue;
+        for (const std::uint32_t v : {a, b, c})
+            if (!found[v]) {
+                normals[v] = n / length;
+                found[v] = true;
+            }
+    }
+    return normals;
+}
+
 struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
@@ -35,9 +57,13 @@ GpuScene::GpuScene(const Scene& scene)
 {
     for (const Mesh& mesh : m_scene.meshes) {
         std::vector<Vertex> vertices(mesh.positions.size());
+        const std::vector<glm::vec3> faceNormals = fallbackNormals(mesh);
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             vertices[i].position = mesh.positions[i];
-            vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1);
+            const glm::vec3 n = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0.0f);
+            const float length = glm::length(n);
+            // The g-buffer relies on unit vertex normals (shaders/gbuffer/GBuffer.frag).
+            vertices[i].normal = std::isfinite(length) && length > 1e-20f ? n / length : faceNormals[i];
             vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
         }
         GpuMesh gpu;

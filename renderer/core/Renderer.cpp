@@ -16,6 +16,7 @@
 #include "passes/VoxelBouncePass.h"
 #include "passes/VoxelIrradiancePass.h"
 #include "passes/ShadowMapPass.h"
+#include "passes/VoxelMipBuilder.h"
 #include "passes/VoxelizePass.h"
 
 #include <glad/gl.h>
@@ -42,11 +43,21 @@ struct Renderer::State {
     gl::Program presentProgram;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
+    VoxelMipBuilder boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureBoxMips)
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
     std::uint64_t coneSamples = 0; ///< counted in the last frame
 };
 
 namespace {
+
+// Levels 1..N of the isotropic radiance volume, which cones do not read when the mips are anisotropic.
+void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v)
+{
+    if (!v.radiance || v.boxMipsVersion == v.radianceVersion)
+        return;
+    builder.buildBox(shaders, v.radiance, v.frame.resolution);
+    v.boxMipsVersion = v.radianceVersion;
+}
 
 std::unique_ptr<Pipeline> makePipeline()
 {
@@ -72,15 +83,15 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
     s.height = height;
     s.indirectDivisor = divisor;
     s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
-    s.normal = gl::Texture::create2D(GL_RGBA16F, width, height);
-    s.albedo = gl::Texture::create2D(GL_RGBA16F, width, height);
+    s.surface = gl::Texture::create2D(GL_RGBA32UI, width, height);
+    s.surface.setFilter(GL_NEAREST, GL_NEAREST);
     s.depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
     s.gbuffer = gl::Framebuffer::create();
     int i = 0;
-    for (const gl::Texture* t : {&s.position, &s.normal, &s.albedo})
+    for (const gl::Texture* t : {&s.position, &s.surface})
         s.gbuffer.attachColor(i++, *t);
     s.gbuffer.attachDepth(s.depth);
-    s.gbuffer.finish(3);
+    s.gbuffer.finish(2);
     const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
     s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
     s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
@@ -305,6 +316,7 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
 
 const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
 {
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
     return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
 }
 
@@ -336,6 +348,7 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
     return m_state->finiteCheck.run(*m_state->shaders, m_state->screen, m_state->voxels);
 }
 
@@ -363,6 +376,7 @@ RadianceImage Renderer::readFrame() const
 
 std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
 {
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
     const VoxelVolume& v = m_state->voxels;
     static const char* const kDirectional[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
     for (std::size_t d = 0; d < 6; ++d)

@@ -26,6 +26,7 @@ std::size_t bytesPerTexel(GLenum internalFormat)
         return 4;
     case GL_RGBA16F:
     case GL_RG32F:
+    case GL_RG32UI:
     case GL_DEPTH32F_STENCIL8: // 32-bit depth, 8-bit stencil, 24 bits unused
         return 8;
     case GL_RGBA32F:

@@ -42,8 +42,7 @@ void CompositePass::execute(FrameContext& frame)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
     s.position.bindUnit(0);
-    s.normal.bindUnit(1);
-    s.albedo.bindUnit(2);
+    s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     s.indirectDiffuse.bindUnit(5);
     s.indirectSpecular.bindUnit(6);

@@ -83,7 +83,7 @@ void ConeTracePass::execute(FrameContext& frame)
 
     ScreenTargets& s = frame.screen;
     s.position.bindUnit(0);
-    s.normal.bindUnit(1);
+    s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     if (cached) {
         v.irradiance.bindUnit(12);

@@ -21,8 +21,9 @@ void GBufferPass::execute(FrameContext& frame)
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 3; ++i)
-        glClearNamedFramebufferfv(s.gbuffer.id(), GL_COLOR, i, zero);
+    const GLuint none[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(s.gbuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferuiv(s.gbuffer.id(), GL_COLOR, 1, none);
     // Depth 1 and stencil 0: no surface, until the nearest one writes its pixel class.
     glClearNamedFramebufferfi(s.gbuffer.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     glEnable(GL_STENCIL_TEST);
@@ -46,6 +47,7 @@ void GBufferPass::execute(FrameContext& frame)
     options.stencilPixelClass = true;
     for (const bool textured : {false, true}) {
         m_programs[textured].set("uViewProjection", viewProjection);
+        m_programs[textured].set("uCameraPosition", camera.position);
         options.materials = [textured](const Material& m) { return (m.albedoTexture >= 0) == textured; };
         frame.scene.draw(m_programs[textured], options, 0);
     }

@@ -14,11 +14,13 @@ PassDecision MipmapPass::plan(const FrameContext& frame)
 void MipmapPass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    m_builder.buildBox(frame.shaders, v.radiance, v.frame.resolution);
-    if (frame.settings.anisotropicMips)
+    if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
-    else
+    } else {
+        m_builder.buildBox(frame.shaders, v.radiance, v.frame.resolution);
+        v.boxMipsVersion = v.radianceVersion;
         v.directional = gl::Texture();
+    }
     m_radianceVersion = v.radianceVersion;
     m_anisotropic = frame.settings.anisotropicMips;
 }

@@ -7,7 +7,10 @@
 
 namespace vct::render {
 
-/** Fills mip levels 1..N of the radiance volume by 2x2x2 box filtering, each level from the one below. */
+/**
+ * Filters the radiance volume into the levels cones read: the six direction-dependent chains with anisotropic
+ * mips, otherwise levels 1..N of the volume itself by 2x2x2 box filtering, each level from the one below.
+ */
 class MipmapPass final : public RenderPass {
 public:
     const char* name() const override { return "mipmaps"; }

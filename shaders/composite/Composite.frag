@@ -17,12 +17,12 @@
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 #include "common/OctahedralNormal.glsl"
+#include "common/GBufferSurface.glsl"
 
 layout(early_fragment_tests) in;
 
 layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 2) uniform sampler2D gAlbedo;
+layout(binding = 1) uniform usampler2D gSurface;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular;
 layout(binding = 7) uniform usampler2D uIndirectGuide; // ScreenTargets::indirectGuide
@@ -109,9 +109,9 @@ void main()
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 position = texelFetch(gPosition, pixel, 0);
     vec3 p = position.xyz;
-    vec4 normalFacing = texelFetch(gNormal, pixel, 0);
-    vec3 n = normalFacing.xyz;
-    vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+    uvec4 surface = texelFetch(gSurface, pixel, 0);
+    vec3 n = surfaceNormal(surface);
+    vec3 albedo = surfaceAlbedo(surface);
 #if defined(GLOSSY) || defined(EMISSION)
     MaterialEntry material = materialAt(position.a);
 #endif
@@ -154,7 +154,7 @@ void main()
 #endif
     vec3 emitted = vec3(0.0);
 #ifdef EMISSION
-    emitted = normalFacing.w > 0.5 ? material.emission.rgb : vec3(0.0);
+    emitted = surfaceFrontFace(surface) ? material.emission.rgb : vec3(0.0);
 #endif
 
 #if VIEW == 0

@@ -6,12 +6,13 @@
 #extension GL_ARB_shader_stencil_export : require
 #include "common/PixelClass.glsl"
 #include "common/OctahedralNormal.glsl"
+#include "common/GBufferSurface.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 #include "cone/TracedPixel.glsl"
 
 layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
+layout(binding = 1) uniform usampler2D gSurface;
 
 uniform vec3 uGridOrigin;
 uniform bool uDiffuseEnabled;
@@ -28,7 +29,8 @@ void main()
 {
     ivec2 pixel = tracedPixel();
     vec4 position = texelFetch(gPosition, pixel, 0);
-    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    uvec4 surface = texelFetch(gSurface, pixel, 0);
+    vec3 n = surfaceNormal(surface);
     bool geometry = position.a > 0.0;
     oDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
     uint pixelClass = geometry ? PIXEL_GEOMETRY : 0u;

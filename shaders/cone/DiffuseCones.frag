@@ -6,9 +6,10 @@
 #define MAX_CONES 32
 #include "common/ConeTracing.glsl"
 #include "cone/TracedPixel.glsl"
+#include "common/GBufferSurface.glsl"
 
 layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
+layout(binding = 1) uniform usampler2D gSurface;
 
 uniform float uConeOffset; // metres along the normal
 
@@ -18,7 +19,7 @@ void main()
 {
     ivec2 pixel = tracedPixel();
     vec3 p = texelFetch(gPosition, pixel, 0).xyz;
-    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    vec3 n = surfaceNormal(texelFetch(gSurface, pixel, 0));
     oDiffuse = gatherDiffuse(p + n * uConeOffset, n);
     countSamples();
 }

@@ -4,11 +4,12 @@
 #include "cone/ConeSampleCount.glsl"
 #include "common/ConeTracing.glsl"
 #include "cone/TracedPixel.glsl"
+#include "common/GBufferSurface.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 
 layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
+layout(binding = 1) uniform usampler2D gSurface;
 
 uniform float uConeOffset; // metres along the normal
 uniform float uSpecularMinTanHalf;
@@ -20,7 +21,7 @@ void main()
 {
     ivec2 pixel = tracedPixel();
     vec4 position = texelFetch(gPosition, pixel, 0);
-    vec3 n = texelFetch(gNormal, pixel, 0).xyz;
+    vec3 n = surfaceNormal(texelFetch(gSurface, pixel, 0));
     float shininess = materialAt(position.a).specularShininess.w;
     vec3 mirror = reflect(normalize(position.xyz - uCameraPosition), n);
     // Half-angle where the Phong lobe cos^n falls to one half, never narrower than the set minimum.

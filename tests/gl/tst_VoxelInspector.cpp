@@ -18,11 +18,13 @@ private slots:
     void initTestCase();
     void levelZeroListsEveryNonEmptyVoxel();
     void coarserLevelsNeverListMore();
+    void coarseRadianceFollowsTheLight();
     void cubesAreDrawnIntoTheGivenRectangle();
     void presentToneMapsIntoAFramebuffer();
 
 private:
     test::GlTestContext m_gl;
+    render::Scene m_scene;
     render::Camera m_camera;
 };
 
@@ -30,14 +32,13 @@ void VoxelInspectorTest::initTestCase()
 {
     m_gl = test::GlTestContext::create();
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
-    render::Scene scene;
     QString error;
-    QVERIFY2(doc::SceneLoader::load(QStringLiteral("builtin:cornell"), scene, &error), qPrintable(error));
+    QVERIFY2(doc::SceneLoader::load(QStringLiteral("builtin:cornell"), m_scene, &error), qPrintable(error));
     render::RenderSettings settings;
     settings.voxelResolution = 32;
     m_gl.renderer->setSettings(settings);
-    m_gl.renderer->setScene(scene);
-    m_camera = scene.camera;
+    m_gl.renderer->setScene(m_scene);
+    m_camera = m_scene.camera;
     m_gl.renderer->renderFrame(m_camera, 32, 32);
 }
 
@@ -73,6 +74,33 @@ void VoxelInspectorTest::coarserLevelsNeverListMore()
         previous = radiance;
     }
     QCOMPARE(previous, std::size_t(1)); // the coarsest level is one cell
+}
+
+// With anisotropic mips (the default) cones never read the box-filtered levels, so they are filtered only when
+// inspected: they must still show the voxels' current light, not the light they were last filtered for.
+void VoxelInspectorTest::coarseRadianceFollowsTheLight()
+{
+    const auto levelSum = [this](int level) {
+        int size = 0;
+        double sum = 0.0;
+        const std::vector<float> texels = m_gl.renderer->readVoxels("radiance", level, size);
+        for (std::size_t i = 0; i < texels.size(); i += 4)
+            sum += double(texels[i]) + texels[i + 1] + texels[i + 2];
+        return sum;
+    };
+    const double before = levelSum(2);
+    QVERIFY(before > 0.0);
+    // The box is lit by its emitters alone: voxel radiance is proportional to their emission.
+    for (std::size_t m = 0; m < m_scene.materials.size(); ++m)
+        if (m_scene.materials[m].isEmissive()) {
+            render::Material brighter = m_scene.materials[m];
+            brighter.emission *= 2.0f;
+            m_gl.renderer->setMaterial(m, brighter);
+        }
+    m_gl.renderer->renderFrame(m_camera, 32, 32);
+    const double ratio = levelSum(2) / before;
+    QVERIFY2(std::abs(ratio - 2.0) < 1e-3, qPrintable(QString::number(ratio)));
+    QCOMPARE(m_gl.renderer->listVoxels(5, render::VoxelChannel::Radiance).samples.size(), std::size_t(1));
 }
 
 void VoxelInspectorTest::cubesAreDrawnIntoTheGivenRectangle()
