@@ -95,8 +95,8 @@ struct ScreenTargets {
     gl::Framebuffer gbuffer;
     gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
     gl::Texture indirectSpecular; ///< rgba16f: radiance along the specular cone.
-    /// rgba32ui: what the composite's upsampling weighs each traced pixel by: the world position of the pixel
-    /// it was traced from (float bits) and its normal (common/OctahedralNormal.glsl), 0 where no surface.
+    /// rgba32f: what the composite's upsampling weighs each traced pixel by: the tangent plane of the pixel it
+    /// was traced from (unit normal, offset dot(p - camera, n)), 0 where no surface.
     gl::Texture indirectGuide;
     gl::Texture indirectStencil; ///< depth24 + stencil8 at the traced size: the traced pixels' classes
     gl::Framebuffer indirectTarget;

@@ -95,7 +95,7 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
     const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
     s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
     s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
-    s.indirectGuide = gl::Texture::create2D(GL_RGBA32UI, lowWidth, lowHeight);
+    s.indirectGuide = gl::Texture::create2D(GL_RGBA32F, lowWidth, lowHeight);
     s.indirectGuide.setFilter(GL_NEAREST, GL_NEAREST);
     s.indirectStencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, lowWidth, lowHeight);
     s.indirectTarget = gl::Framebuffer::create();

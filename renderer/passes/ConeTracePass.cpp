@@ -110,6 +110,7 @@ void ConeTracePass::execute(FrameContext& frame)
     classify.set("uDivisor", s.indirectDivisor);
     classify.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     classify.set("uGridOrigin", v.frame.origin);
+    classify.set("uCameraPosition", frame.camera.position);
     classify.set("uDiffuseEnabled", diffuse ? 1 : 0);
     classify.set("uSpecularEnabled", specular ? 1 : 0);
     if (cached) {

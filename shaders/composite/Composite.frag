@@ -16,7 +16,6 @@
 #include "common/Lights.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
-#include "common/OctahedralNormal.glsl"
 #include "common/GBufferSurface.glsl"
 
 layout(early_fragment_tests) in;
@@ -25,7 +24,7 @@ layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular;
-layout(binding = 7) uniform usampler2D uIndirectGuide; // ScreenTargets::indirectGuide
+layout(binding = 7) uniform sampler2D uIndirectGuide; // ScreenTargets::indirectGuide
 
 uniform vec3 uCameraPosition;
 uniform float uShadowOffset; // metres along the normal for shadow lookups
@@ -38,8 +37,9 @@ uniform int uDivisor;
 #ifdef NEEDS_INDIRECT
 #ifdef UPSAMPLE
 // Joint bilateral upsampling: the four nearest traced pixels, weighted bilinearly and by how well their
-// surface (the full-resolution pixel each was traced from, kept in the guide) matches this pixel's plane and
-// normal, so light does not bleed across depth or orientation edges.
+// surface (the tangent plane of the full-resolution pixel each was traced from, kept in the guide) matches
+// this pixel's normal and passes through this pixel, so light does not bleed across depth or orientation
+// edges. The guide's plane, rather than its point, saves unpacking a normal per tap.
 void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
 {
     ivec2 lowSize = textureSize(uIndirectDiffuse, 0);
@@ -52,17 +52,16 @@ void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specu
     float bestWeight = -1.0;
     int best = 0;
     float planeScale = 1.0 / max(uShadowOffset * 2.0, 1e-6); // metres to voxels
+    vec3 fromCamera = p - uCameraPosition;
     for (int i = 0; i < 4; ++i) {
         ivec2 offset = ivec2(i & 1, i >> 1);
         ivec2 q = clamp(base + offset, ivec2(0), lowSize - 1);
-        uvec4 guide = texelFetch(uIndirectGuide, q, 0);
-        vec3 qp = uintBitsToFloat(guide.xyz);
-        vec3 qn = unpackNormal(guide.w);
+        vec4 plane = texelFetch(uIndirectGuide, q, 0); // a zero normal where no surface was traced
         float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        float c = max(dot(qn, n), 0.0);
+        float c = max(dot(plane.xyz, n), 0.0);
         c *= c;
         c *= c; // cos^8 without pow: llvmpipe expands pow to exp2(log2) per lane
-        float similarity = guide.w != 0u ? c * c * exp(-abs(dot(qp - p, n)) * planeScale) : 0.0;
+        float similarity = c * c * exp(-abs(dot(fromCamera, plane.xyz) - plane.w) * planeScale);
         taps[i] = q;
         weights[i] = (bilinear + 1e-3) * similarity;
         weightSum += weights[i];

@@ -1,11 +1,10 @@
 // The first of the cone passes over the traced pixels (passes/ConeTracePass): sorts them into stencil classes
 // (common/PixelClass.glsl) so that the cone shaders run only where they are needed, writes the composite's
-// upsampling guide, and with the irradiance cache (IRRADIANCE_CACHE) takes indirect diffuse light from it.
+// upsampling guide (the traced surface's tangent plane), and with the irradiance cache (IRRADIANCE_CACHE) takes indirect diffuse light from it.
 // A pixel the cache cannot serve, or every pixel without a cache, is marked PIXEL_NEEDS_CONES;
 // cone/DiffuseCones.frag then traces those, and cone/SpecularCone.frag the PIXEL_GLOSSY ones.
 #extension GL_ARB_shader_stencil_export : require
 #include "common/PixelClass.glsl"
-#include "common/OctahedralNormal.glsl"
 #include "common/GBufferSurface.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
@@ -15,6 +14,7 @@ layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 
 uniform vec3 uGridOrigin;
+uniform vec3 uCameraPosition;
 uniform bool uDiffuseEnabled;
 uniform bool uSpecularEnabled;
 
@@ -23,7 +23,7 @@ uniform bool uSpecularEnabled;
 #endif
 
 layout(location = 0) out vec4 oDiffuse; // rgb: sum_i w_i L_i, a: ambient visibility
-layout(location = 2) out uvec4 oGuide;  // xyz: the traced pixel's world position (float bits), w: its normal, 0 = none
+layout(location = 2) out vec4 oGuide;   // the traced pixel's tangent plane: normal, offset from the camera; 0 = none
 
 void main()
 {
@@ -49,7 +49,7 @@ void main()
 #endif
     if (needsCones)
         pixelClass |= PIXEL_NEEDS_CONES;
-    // The lowest bit set keeps a geometry pixel's guide from reading as none; it moves the normal by 3e-5.
-    oGuide = geometry ? uvec4(floatBitsToUint(position.xyz), packNormal(n) | 1u) : uvec4(0u);
+    // Relative to the camera, so the offset keeps its precision in a scene far from the origin.
+    oGuide = geometry ? vec4(n, dot(position.xyz - uCameraPosition, n)) : vec4(0.0);
     gl_FragStencilRefARB = int(pixelClass);
 }
