@@ -60,6 +60,7 @@ private:
     QCheckBox* m_anisotropic = nullptr;
     QComboBox* m_bounces = nullptr;
     QComboBox* m_indirectResolution = nullptr;
+    QComboBox* m_specularResolution = nullptr;
     QCheckBox* m_irradianceCache = nullptr;
     QComboBox* m_irradianceCell = nullptr;
     QSpinBox* m_coneCount = nullptr;

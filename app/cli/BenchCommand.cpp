@@ -62,8 +62,8 @@ int BenchCommand::run(int argc, char** argv)
     const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Also write the Markdown tables to this file."), QStringLiteral("FILE.md"));
     const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     const QCommandLineOption naiveSetOption(QStringLiteral("naive-set"),
-        QStringLiteral("targets: a setting of the naive path on top of --set, repeatable (default: indirect_res=1 and "
-                       "irradiance_cache=off, every pixel traced with the full cone set)."),
+        QStringLiteral("targets: a setting of the naive path on top of --set, repeatable (default: indirect_res=1, "
+                       "specular_res=1 and irradiance_cache=off, every pixel traced with the full cone set)."),
         QStringLiteral("key=value"));
     const QCommandLineOption referenceOption(QStringLiteral("reference"),
         QStringLiteral("targets: a linear reference image (PFM/EXR) of the scene's camera; frames are box-downsampled to its size."),
@@ -100,7 +100,7 @@ int BenchCommand::run(int argc, char** argv)
     render::RenderSettings naiveSettings = settings;
     QStringList naiveAssignments = parser.values(naiveSetOption);
     if (naiveAssignments.isEmpty())
-        naiveAssignments = {QStringLiteral("indirect_res=1"), QStringLiteral("irradiance_cache=off")};
+        naiveAssignments = {QStringLiteral("indirect_res=1"), QStringLiteral("specular_res=1"), QStringLiteral("irradiance_cache=off")};
     if (const QString problem = applySettingAssignments(naiveAssignments, naiveSettings); !problem.isEmpty())
         return fail(1, problem);
     const double previewScale = parser.value(previewScaleOption).toDouble(&ok);

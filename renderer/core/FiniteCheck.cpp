@@ -35,7 +35,8 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     // normal is made finite before it is packed).
     const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
         {"g-buffer position", &screen.position}, {"indirect diffuse", &screen.indirectDiffuse},
-        {"indirect specular", &screen.indirectSpecular}, {"indirect upsampling guide", &screen.indirectGuide}, {"voxel normal", &voxels.normal},
+        {"indirect upsampling guide", &screen.indirectGuide}, {"specular", &screen.specular},
+        {"specular upsampling guide", &screen.specularGuide}, {"voxel normal", &voxels.normal},
         {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};
     for (const auto& [name, texture] : targets)
         if (*texture)

@@ -94,12 +94,17 @@ struct ScreenTargets {
     gl::Texture depth;
     gl::Framebuffer gbuffer;
     gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
-    gl::Texture indirectSpecular; ///< rgba16f: radiance along the specular cone.
     /// rgba32f: what the composite's upsampling weighs each traced pixel by: the tangent plane of the pixel it
     /// was traced from (unit normal, offset dot(p - camera, n)), 0 where no surface.
     gl::Texture indirectGuide;
     gl::Texture indirectStencil; ///< depth24 + stencil8 at the traced size: the traced pixels' classes
     gl::Framebuffer indirectTarget;
+    /// The specular cone's own grid, width/specularDivisor x height/specularDivisor (rounded up).
+    int specularDivisor = 1;
+    gl::Texture specular;        ///< rgba16f: radiance along the specular cone.
+    gl::Texture specularGuide;   ///< rgba32f: the specular grid's tangent planes, as indirectGuide
+    gl::Texture specularStencil; ///< depth24 + stencil8: the specular grid's pixel classes
+    gl::Framebuffer specularTarget;
     gl::Texture final;            ///< rgba32f: linear radiance of the frame.
     gl::Framebuffer finalTarget;  ///< with the g-buffer's depth and stencil, read only</
 };

@@ -46,6 +46,11 @@ struct RenderSettings {
     /// normal-aware weights: indirect light varies slowly, and the cones are most of a frame's cost.
     /// Quarter resolution (4) costs no measurable accuracy against half or full (within 1.5%, docs/ACCURACY.md).
     int indirectDivisor = 4;
+    /// The specular cone is traced for one pixel in divisor x divisor (1, 2, 4 or 8) and upsampled the same way.
+    /// Specular cones are never narrower than specularApertureDeg, so what they see varies slowly over the
+    /// screen except across edges, which the upsampling keeps; 8 halves the cone pass of the atrium's glossy
+    /// floor for no measurable error (docs/ACCURACY.md).
+    int specularDivisor = 8;
     bool direct = true;
     bool indirectDiffuse = true;
     bool indirectSpecular = true;

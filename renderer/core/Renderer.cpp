@@ -75,13 +75,30 @@ std::unique_ptr<Pipeline> makePipeline()
     return std::make_unique<Pipeline>(std::move(passes));
 }
 
-void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
+// One grid of traced pixels: its targets for one value and the guide, and its stencil, in one framebuffer.
+void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl::Texture& guide, gl::Texture& stencil,
+    gl::Framebuffer& target)
 {
-    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.final)
+    const int w = (width + divisor - 1) / divisor, h = (height + divisor - 1) / divisor;
+    values = gl::Texture::create2D(GL_RGBA16F, w, h);
+    guide = gl::Texture::create2D(GL_RGBA32F, w, h);
+    guide.setFilter(GL_NEAREST, GL_NEAREST);
+    stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
+    target = gl::Framebuffer::create();
+    target.attachColor(0, values);
+    target.attachColor(1, guide);
+    target.attachDepth(stencil);
+    target.finish(2);
+}
+
+void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int specularDivisor)
+{
+    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.specularDivisor == specularDivisor && s.final)
         return;
     s.width = width;
     s.height = height;
     s.indirectDivisor = divisor;
+    s.specularDivisor = specularDivisor;
     s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.surface = gl::Texture::create2D(GL_RGBA32UI, width, height);
     s.surface.setFilter(GL_NEAREST, GL_NEAREST);
@@ -92,18 +109,8 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor)
         s.gbuffer.attachColor(i++, *t);
     s.gbuffer.attachDepth(s.depth);
     s.gbuffer.finish(2);
-    const int lowWidth = (width + divisor - 1) / divisor, lowHeight = (height + divisor - 1) / divisor;
-    s.indirectDiffuse = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
-    s.indirectSpecular = gl::Texture::create2D(GL_RGBA16F, lowWidth, lowHeight);
-    s.indirectGuide = gl::Texture::create2D(GL_RGBA32F, lowWidth, lowHeight);
-    s.indirectGuide.setFilter(GL_NEAREST, GL_NEAREST);
-    s.indirectStencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, lowWidth, lowHeight);
-    s.indirectTarget = gl::Framebuffer::create();
-    s.indirectTarget.attachColor(0, s.indirectDiffuse);
-    s.indirectTarget.attachColor(1, s.indirectSpecular);
-    s.indirectTarget.attachColor(2, s.indirectGuide);
-    s.indirectTarget.attachDepth(s.indirectStencil);
-    s.indirectTarget.finish(3);
+    makeTracedGrid(width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
+    makeTracedGrid(width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
     s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.finalTarget = gl::Framebuffer::create();
     s.finalTarget.attachColor(0, s.final);
@@ -272,7 +279,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         st.voxels.frame = wanted;
         ++st.versions.staticGeometry;
     }
-    resizeScreen(st.screen, width, height, m_settings.indirectDivisor);
+    resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
         st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), st.coneSampleCounter.get()};

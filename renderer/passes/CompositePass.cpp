@@ -33,6 +33,8 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
         defines.emplace_back("EMISSION");
     if (frame.screen.indirectDivisor > 1)
         defines.emplace_back("UPSAMPLE");
+    if (frame.screen.specularDivisor > 1)
+        defines.emplace_back("SPECULAR_UPSAMPLE");
     return defines;
 }
 
@@ -45,8 +47,9 @@ void CompositePass::execute(FrameContext& frame)
     s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     s.indirectDiffuse.bindUnit(5);
-    s.indirectSpecular.bindUnit(6);
+    s.specular.bindUnit(6);
     s.indirectGuide.bindUnit(7);
+    s.specularGuide.bindUnit(10);
     s.finalTarget.bind();
     glViewport(0, 0, s.width, s.height);
     const float sky[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -69,6 +72,7 @@ void CompositePass::execute(FrameContext& frame)
         applyLightUniforms(program, scene, frame.shadows);
         program.set("uCameraPosition", frame.camera.position);
         program.set("uDivisor", s.indirectDivisor);
+        program.set("uSpecularDivisor", s.specularDivisor);
         // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
         program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
         glStencilFunc(GL_EQUAL, GLint(pixelClass), 0xFF);

@@ -52,11 +52,6 @@ gl::Program buildVariant(const ShaderLibrary& shaders, const char* name, const c
     return shaders.build({label, {"common/FullScreen.vert", file}, defines});
 }
 
-void drawFullScreen()
-{
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
 } // namespace
 
 void ConeTracePass::execute(FrameContext& frame)
@@ -68,85 +63,93 @@ void ConeTracePass::execute(FrameContext& frame)
     const bool cached = VoxelIrradiancePass::inUse(frame) && v.irradiance;
     const bool diffuse = FrameRules::diffuseConesNeeded(frame);
     const bool specular = FrameRules::specularConesNeeded(frame);
-    gl::Program& classify = m_classify[cached ? 1 : 0];
-    if (!classify)
-        classify = frame.shaders.build({cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
-            {"common/FullScreen.vert", "cone/ClassifyPixels.frag"}, cached ? std::vector<std::string>{"IRRADIANCE_CACHE"} : std::vector<std::string>{}});
-    gl::Program& diffuseCones = m_diffuse[anisotropic ? 1 : 0][counting ? 1 : 0];
-    if (diffuse && !diffuseCones)
-        diffuseCones = buildVariant(frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
-    gl::Program& specularCone = m_specular[anisotropic ? 1 : 0][counting ? 1 : 0];
-    if (specular && !specularCone)
-        specularCone = buildVariant(frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
-
     ScreenTargets& s = frame.screen;
     s.position.bindUnit(0);
     s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
+    if (counting)
+        frame.coneSampleCounter->bind();
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    m_emptyVao.bind();
+
+    // Each grid: first the classify draw, whose own stencil value (ARB_shader_stencil_export) replaces what was
+    // there, then the cones on the pixels of their class only.
+    const auto classifyGrid = [&](gl::Program& classify, int divisor) {
+        glStencilMask(0xFF);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+        classify.use();
+        classify.set("uDivisor", divisor);
+        classify.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+        classify.set("uCameraPosition", frame.camera.position);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glStencilMask(0x00);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    };
+    const auto traceClass = [&](gl::Program& cones, int divisor, std::uint32_t pixelClass) {
+        glStencilFunc(GL_EQUAL, GLint(pixelClass), GLuint(pixelClass));
+        ConeTracingSetup::apply(cones, frame, anisotropic, true);
+        cones.set("uDivisor", divisor);
+        cones.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+        cones.use();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+
+    // The diffuse grid: the guide always (the composite upsamples it), diffuse light where needed.
+    gl::Program& classify = m_classify[cached ? 1 : 0];
+    if (!classify)
+        classify = frame.shaders.build({cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
+            {"common/FullScreen.vert", "cone/ClassifyPixels.frag"}, cached ? std::vector<std::string>{"IRRADIANCE_CACHE"} : std::vector<std::string>{}});
     if (cached) {
         v.irradiance.bindUnit(12);
         v.irradianceNormal.bindUnit(13);
         v.irradianceBack.bindUnit(14);
-    }
-    if (counting)
-        frame.coneSampleCounter->bind();
-    s.indirectTarget.bind();
-    glViewport(0, 0, s.indirectDiffuse.width(), s.indirectDiffuse.height());
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_STENCIL_TEST);
-    m_emptyVao.bind();
-    // Pixels no specular cone reaches read as no specular light in the composite's upsampling.
-    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearNamedFramebufferfv(s.indirectTarget.id(), GL_COLOR, 1, none);
-
-    // Classify: the shader's own stencil value (ARB_shader_stencil_export) replaces whatever was there.
-    s.indirectTarget.drawTo({0, 2});
-    glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
-    classify.use();
-    classify.set("uDivisor", s.indirectDivisor);
-    classify.set("uFullSize", glm::ivec3(s.width, s.height, 0));
-    classify.set("uGridOrigin", v.frame.origin);
-    classify.set("uCameraPosition", frame.camera.position);
-    classify.set("uDiffuseEnabled", diffuse ? 1 : 0);
-    classify.set("uSpecularEnabled", specular ? 1 : 0);
-    if (cached) {
         classify.set("uCells", v.irradiance.width());
         classify.set("uCellSize", v.frame.extent / float(v.irradiance.width()));
     }
-    drawFullScreen();
-
-    glStencilMask(0x00);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    classify.set("uGridOrigin", v.frame.origin);
+    classify.set("uDiffuseEnabled", diffuse ? 1 : 0);
+    s.indirectTarget.bind();
+    glViewport(0, 0, s.indirectDiffuse.width(), s.indirectDiffuse.height());
+    s.indirectTarget.drawTo({0, 1});
+    classifyGrid(classify, s.indirectDivisor);
     if (diffuse) {
+        gl::Program& cones = m_diffuse[anisotropic ? 1 : 0][counting ? 1 : 0];
+        if (!cones)
+            cones = buildVariant(frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
         s.indirectTarget.drawTo({0});
-        glStencilFunc(GL_EQUAL, PIXEL_NEEDS_CONES, PIXEL_NEEDS_CONES);
-        ConeTracingSetup::apply(diffuseCones, frame, anisotropic, true);
-        diffuseCones.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
-        diffuseCones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
-        diffuseCones.set("uDivisor", s.indirectDivisor);
-        diffuseCones.set("uFullSize", glm::ivec3(s.width, s.height, 0));
-        diffuseCones.use();
-        drawFullScreen();
+        cones.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
+        cones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
+        traceClass(cones, s.indirectDivisor, PIXEL_NEEDS_CONES);
     }
+    s.indirectTarget.drawTo({0, 1});
+
+    // The specular grid, when some material is glossy: pixels no cone reaches read as no specular light.
     if (specular) {
-        s.indirectTarget.drawTo({1});
-        glStencilFunc(GL_EQUAL, PIXEL_GLOSSY, PIXEL_GLOSSY);
-        ConeTracingSetup::apply(specularCone, frame, anisotropic, true);
-        specularCone.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
-        specularCone.set("uCameraPosition", frame.camera.position);
-        specularCone.set("uAoEnabled", 0);
-        specularCone.set("uDivisor", s.indirectDivisor);
-        specularCone.set("uFullSize", glm::ivec3(s.width, s.height, 0));
-        specularCone.use();
-        drawFullScreen();
+        if (!m_classifySpecular)
+            m_classifySpecular = frame.shaders.build({"cone trace: classify pixels, specular grid",
+                {"common/FullScreen.vert", "cone/ClassifyPixels.frag"}, {"SPECULAR_GRID"}});
+        gl::Program& cone = m_specular[anisotropic ? 1 : 0][counting ? 1 : 0];
+        if (!cone)
+            cone = buildVariant(frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
+        s.specularTarget.bind();
+        glViewport(0, 0, s.specular.width(), s.specular.height());
+        const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(s.specularTarget.id(), GL_COLOR, 0, none);
+        s.specularTarget.drawTo({1});
+        classifyGrid(m_classifySpecular, s.specularDivisor);
+        s.specularTarget.drawTo({0});
+        cone.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
+        cone.set("uCameraPosition", frame.camera.position);
+        cone.set("uAoEnabled", 0);
+        traceClass(cone, s.specularDivisor, PIXEL_GLOSSY);
+        s.specularTarget.drawTo({0, 1});
     }
     glStencilMask(0xFF);
     glDisable(GL_STENCIL_TEST);
-    s.indirectTarget.drawTo({0, 1, 2});
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

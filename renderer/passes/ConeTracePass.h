@@ -7,11 +7,12 @@
 namespace vct::render {
 
 /**
- * Indirect light of the traced pixels (one per indirect-divisor block of the screen), in up to three draws:
- * one classifies every traced pixel into stencil classes (common/PixelClass.glsl), writes the composite's
- * upsampling guide and takes diffuse light from the irradiance cache where it can; then the diffuse cones run
- * only on the pixels the cache could not serve (all of them without a cache), and the specular cone only on
- * glossy ones. llvmpipe runs all of a fragment shader's code on every pixel it is drawn on, branches or not:
+ * Indirect light of two grids of traced pixels, one pixel per indirect-divisor block of the screen for diffuse
+ * light and one per specular-divisor block for the specular cone. On each grid a first draw classifies every
+ * pixel into stencil classes (common/PixelClass.glsl) and writes the composite's upsampling guide; on the
+ * diffuse grid it takes diffuse light from the irradiance cache where it can. Then the diffuse cones run only
+ * on the pixels the cache could not serve (all of them without a cache), and the specular cone only on glossy
+ * ones. llvmpipe runs all of a fragment shader's code on every pixel it is drawn on, branches or not:
  * the early stencil test is what keeps each shader off the pixels that do not need it.
  */
 class ConeTracePass final : public RenderPass {
@@ -26,8 +27,9 @@ public:
     void invalidate() override {}
 
 private:
-    /// [irradiance cache lookup]
+    /// [irradiance cache lookup]: the diffuse grid's; and the specular grid's
     gl::Program m_classify[2];
+    gl::Program m_classifySpecular;
     /// [anisotropic mips][COUNT_SAMPLES for vct-bench perf]
     gl::Program m_diffuse[2][2];
     gl::Program m_specular[2][2];

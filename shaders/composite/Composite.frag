@@ -10,7 +10,8 @@
 //   DIRECT, INDIRECT_DIFFUSE, INDIRECT_SPECULAR  the terms present this frame
 //   GLOSSY    the material has a specular lobe (PIXEL_GLOSSY)
 //   EMISSION  the material emits (PIXEL_EMISSIVE) and emission is on
-//   UPSAMPLE  the indirect targets are 1/uDivisor of the screen per axis
+//   UPSAMPLE  the diffuse grid is 1/uDivisor of the screen per axis
+//   SPECULAR_UPSAMPLE  the specular grid is 1/uSpecularDivisor of the screen per axis
 //   VIEW      RenderSettings::view (0 = the final image)
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
@@ -23,80 +24,16 @@ layout(early_fragment_tests) in;
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
-layout(binding = 6) uniform sampler2D uIndirectSpecular;
-layout(binding = 7) uniform sampler2D uIndirectGuide; // ScreenTargets::indirectGuide
+layout(binding = 6) uniform sampler2D uIndirectSpecular; // at the specular grid
+layout(binding = 7) uniform sampler2D uIndirectGuide;    // ScreenTargets::indirectGuide
+layout(binding = 10) uniform sampler2D uSpecularGuide;   // ScreenTargets::specularGuide
 
 uniform vec3 uCameraPosition;
 uniform float uShadowOffset; // metres along the normal for shadow lookups
-uniform int uDivisor;
+uniform int uDivisor;         // the diffuse grid's
+uniform int uSpecularDivisor; // the specular grid's
 
-#if defined(INDIRECT_DIFFUSE) || defined(INDIRECT_SPECULAR) || VIEW == 4
-#define NEEDS_INDIRECT
-#endif
-
-#ifdef NEEDS_INDIRECT
-#ifdef UPSAMPLE
-// Joint bilateral upsampling: the four nearest traced pixels, weighted bilinearly and by how well their
-// surface (the tangent plane of the full-resolution pixel each was traced from, kept in the guide) matches
-// this pixel's normal and passes through this pixel, so light does not bleed across depth or orientation
-// edges. The guide's plane, rather than its point, saves unpacking a normal per tap.
-void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
-{
-    ivec2 lowSize = textureSize(uIndirectDiffuse, 0);
-    vec2 low = (vec2(pixel) + 0.5) / float(uDivisor) - 0.5;
-    ivec2 base = ivec2(floor(low));
-    vec2 f = low - vec2(base);
-    ivec2 taps[4];
-    float weights[4];
-    float weightSum = 0.0;
-    float bestWeight = -1.0;
-    int best = 0;
-    float planeScale = 1.0 / max(uShadowOffset * 2.0, 1e-6); // metres to voxels
-    vec3 fromCamera = p - uCameraPosition;
-    for (int i = 0; i < 4; ++i) {
-        ivec2 offset = ivec2(i & 1, i >> 1);
-        ivec2 q = clamp(base + offset, ivec2(0), lowSize - 1);
-        vec4 plane = texelFetch(uIndirectGuide, q, 0); // a zero normal where no surface was traced
-        float bilinear = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        float c = max(dot(plane.xyz, n), 0.0);
-        c *= c;
-        c *= c; // cos^8 without pow: llvmpipe expands pow to exp2(log2) per lane
-        float similarity = c * c * exp(-abs(dot(fromCamera, plane.xyz) - plane.w) * planeScale);
-        taps[i] = q;
-        weights[i] = (bilinear + 1e-3) * similarity;
-        weightSum += weights[i];
-        if (similarity > bestWeight) {
-            bestWeight = similarity;
-            best = i;
-        }
-    }
-    if (!(weightSum > 1e-4)) { // no neighbour lies on this surface: take the closest match rather than nothing
-        for (int i = 0; i < 4; ++i)
-            weights[i] = i == best ? 1.0 : 0.0;
-        weightSum = 1.0;
-    }
-    diffuse = vec4(0.0);
-    for (int i = 0; i < 4; ++i)
-        diffuse += weights[i] * texelFetch(uIndirectDiffuse, taps[i], 0);
-    diffuse /= weightSum;
-    specular = vec3(0.0);
-#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
-    for (int i = 0; i < 4; ++i)
-        specular += weights[i] * texelFetch(uIndirectSpecular, taps[i], 0).rgb;
-    specular /= weightSum;
-#endif
-}
-#else
-void fetchIndirect(ivec2 pixel, vec3 p, vec3 n, out vec4 diffuse, out vec3 specular)
-{
-    diffuse = texelFetch(uIndirectDiffuse, pixel, 0);
-    specular = vec3(0.0);
-#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
-    specular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
-#endif
-}
-#endif
-#endif
+#include "composite/Upsampling.glsl"
 
 layout(location = 0) out vec4 oRadiance;
 
@@ -120,9 +57,20 @@ void main()
 #endif
 
     vec4 indirectDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
+#if defined(INDIRECT_DIFFUSE) || VIEW == 4
+#ifdef UPSAMPLE
+    indirectDiffuse = upsampled(uIndirectDiffuse, upsamplingTaps(uIndirectGuide, uDivisor, pixel, p, n));
+#else
+    indirectDiffuse = texelFetch(uIndirectDiffuse, pixel, 0);
+#endif
+#endif
     vec3 indirectSpecular = vec3(0.0);
-#ifdef NEEDS_INDIRECT
-    fetchIndirect(pixel, p, n, indirectDiffuse, indirectSpecular);
+#if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
+#ifdef SPECULAR_UPSAMPLE
+    indirectSpecular = upsampled(uIndirectSpecular, upsamplingTaps(uSpecularGuide, uSpecularDivisor, pixel, p, n)).rgb;
+#else
+    indirectSpecular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
+#endif
 #endif
 
     vec3 direct = vec3(0.0);

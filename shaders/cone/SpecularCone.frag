@@ -1,5 +1,5 @@
-// Indirect specular light of a glossy traced pixel (stencil PIXEL_GLOSSY, set by cone/ClassifyPixels.frag):
-// one cone along the mirrored view direction, as wide as the material's Phong lobe.
+// Indirect specular light of a glossy pixel of the specular grid (stencil PIXEL_GLOSSY, set by
+// cone/ClassifyPixels.frag): one cone along the mirrored view direction, as wide as the material's Phong lobe.
 #include "common/ConeMath.glsl"
 #include "cone/ConeSampleCount.glsl"
 #include "common/ConeTracing.glsl"
@@ -15,7 +15,7 @@ uniform float uConeOffset; // metres along the normal
 uniform float uSpecularMinTanHalf;
 uniform vec3 uCameraPosition;
 
-layout(location = 1) out vec4 oSpecular;
+layout(location = 0) out vec4 oSpecular;
 
 void main()
 {
