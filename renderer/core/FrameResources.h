@@ -20,7 +20,8 @@ constexpr int kDirectionalTiles = 6;
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
     VoxelGridFrame frame;
-    /// r32f atlas of sums written with imageAtomicAdd (albedo rgb, count, normal xyz, emission rgb), 2x2x3 grids.
+    /// r32f atlas of sums written with imageAtomicAdd (albedo rgb, count, normal xyz, emission rgb),
+    /// 4n x 3n x n: a 4 x 3 block of slots per voxel (common/VoxelAccumulators.glsl).
     gl::Texture accumulators;
     gl::Texture staticAlbedo, staticNormal, staticEmission; ///< Static meshes only, kept while dynamic ones move.
     gl::Texture albedo;   ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).

@@ -210,7 +210,7 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         return total;
     };
     const std::uint64_t n = std::uint64_t(voxelResolution);
-    std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 2n x 2n x 3n
+    std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 4n x 3n x n
     bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
     bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
     if (anisotropicMips && n >= 2)

@@ -39,8 +39,8 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     if (v.albedo && v.albedo.width() == res)
         return;
     const int levels = v.frame.levelCount();
-    // One r32f atlas of 2 x 2 x 3 slots holds the ten running sums (see common/VoxelAccumulators.glsl).
-    v.accumulators = gl::Texture::create3D(GL_R32F, 2 * res, 2 * res, 3 * res);
+    // One r32f atlas holds the ten running sums, a 4 x 3 block per voxel (see common/VoxelAccumulators.glsl).
+    v.accumulators = gl::Texture::create3D(GL_R32F, 4 * res, 3 * res, res);
     v.dynamicBounds = Aabb{};
     v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
     v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
@@ -60,12 +60,9 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
     const int res = v.frame.resolution;
     // Only the region the meshes can touch needs zero sums: clearing the whole atlas costs more than drawing.
     const float zero = 0.0f;
-    for (int slot = 0; slot < 10; ++slot) {
-        const glm::ivec3 origin = region.lo + res * glm::ivec3(slot % 2, (slot / 2) % 2, slot / 4);
-        const glm::ivec3 size = region.size();
-        glClearTexSubImage(v.accumulators.id(), 0, origin.x, origin.y, origin.z, size.x, size.y, size.z, GL_RED, GL_FLOAT, &zero);
-    }
     const glm::ivec3 size = region.size();
+    glClearTexSubImage(v.accumulators.id(), 0, 4 * region.lo.x, 3 * region.lo.y, region.lo.z, 4 * size.x, 3 * size.y,
+        size.z, GL_RED, GL_FLOAT, &zero);
     touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
