@@ -62,6 +62,13 @@ struct VoxelVolume {
     /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
     OccupiedCellList staticVoxels;
     OccupiedCellList dynamicVoxels;
+    /** The lists that together name every occupied voxel: the static one, and the dynamic one if there are dynamic meshes. */
+    std::vector<const OccupiedCellList*> occupiedVoxels(bool dynamicMeshes) const
+    {
+        if (dynamicMeshes)
+            return {&staticVoxels, &dynamicVoxels};
+        return {&staticVoxels};
+    }
 
     std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance. */

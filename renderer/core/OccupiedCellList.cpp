@@ -22,7 +22,7 @@ void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& al
     buildWith(m_program, region);
 }
 
-void OccupiedCellList::reset(std::size_t capacity)
+void OccupiedCellList::reset(std::size_t capacity, unsigned binding)
 {
     if (!m_dispatch)
         m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -31,8 +31,8 @@ void OccupiedCellList::reset(std::size_t capacity)
         m_cells = gl::Buffer(bytes, nullptr, 0);
     const std::uint32_t empty[4] = {0, 1, 1, 0};
     m_dispatch.upload(empty, sizeof empty);
-    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
+    m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, binding + 1);
 }
 
 void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& region)

@@ -34,11 +34,12 @@ public:
      */
     void buildWith(const gl::Program& lister, const VoxelRegion& region);
     /**
-     * Empties the list and binds it (storage buffers 0 and 1) for a shader of the caller's, of any stage, to
-     * fill with appendCell() (common/AppendCell.glsl, its uGroupSize set to kGroupSize) with at most
-     * @p capacity cells: the voxelizer lists the voxels it reaches this way while it writes them.
+     * Empties the list and binds it (storage buffers @p binding and the next) for a shader of the caller's, of
+     * any stage, to fill with appendCell() (common/AppendCell.glsl with APPEND_BINDING = @p binding, its
+     * uGroupSize set to kGroupSize) with at most @p capacity cells: the voxelizer lists the voxels it reaches
+     * this way while it writes them.
      */
-    void reset(std::size_t capacity);
+    void reset(std::size_t capacity, unsigned binding = 0);
     /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells. */
     void dispatchOverCells() const;
 

@@ -51,11 +51,12 @@ struct Renderer::State {
 namespace {
 
 // Levels 1..N of the isotropic radiance volume, which cones do not read when the mips are anisotropic.
-void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v)
+void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
 {
     if (!v.radiance || v.boxMipsVersion == v.radianceVersion)
         return;
-    builder.buildBox(shaders, v.radiance, v.frame.resolution);
+    builder.listCells(shaders, v.frame.resolution, v.radiance.levels(), v.occupiedVoxels(dynamicMeshes));
+    builder.buildBox(shaders, v.radiance);
     v.boxMipsVersion = v.radianceVersion;
 }
 
@@ -323,7 +324,7 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
 
 const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
 }
 
@@ -355,7 +356,7 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     return m_state->finiteCheck.run(*m_state->shaders, m_state->screen, m_state->voxels);
 }
 
@@ -383,7 +384,7 @@ RadianceImage Renderer::readFrame() const
 
 std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels);
+    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     const VoxelVolume& v = m_state->voxels;
     static const char* const kDirectional[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
     for (std::size_t d = 0; d < 6; ++d)

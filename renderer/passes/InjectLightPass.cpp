@@ -113,9 +113,8 @@ void InjectLightPass::execute(FrameContext& frame)
     v.radiance.bindImage(0, 0, GL_WRITE_ONLY);
     if (whole) {
         // A voxel both layers reach is lit twice, with the same result.
-        v.staticVoxels.dispatchOverCells();
-        if (frame.scene.hasDynamicMeshes())
-            v.dynamicVoxels.dispatchOverCells();
+        for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
+            voxels->dispatchOverCells();
     } else {
         m_occupied.dispatchOverCells();
     }

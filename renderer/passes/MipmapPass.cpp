@@ -14,10 +14,11 @@ PassDecision MipmapPass::plan(const FrameContext& frame)
 void MipmapPass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
+    m_builder.listCells(frame.shaders, v.frame.resolution, v.radiance.levels(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
     } else {
-        m_builder.buildBox(frame.shaders, v.radiance, v.frame.resolution);
+        m_builder.buildBox(frame.shaders, v.radiance);
         v.boxMipsVersion = v.radianceVersion;
         v.directional = gl::Texture();
     }

@@ -40,8 +40,11 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (!v.bounced || v.bounced.width() != res)
         v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.radiance.levels());
 
-    // Empty voxels stay dark; the gather runs over the occupied ones only.
-    m_occupied.build(frame.shaders, v.albedo, VoxelRegion::whole(res), 1, &v.bounced);
+    // Empty voxels stay dark; the gather runs over the occupied ones only (a voxel both layers reach, twice).
+    const float dark[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, dark);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    const std::vector<const OccupiedCellList*> occupied = v.occupiedVoxels(frame.scene.hasDynamicMeshes());
     // Gather from the first-bounce volume, not from last time's second bounce.
     ConeTracingSetup::apply(program, frame, anisotropic, false);
     program.set("uAoEnabled", 0);
@@ -49,10 +52,12 @@ void VoxelBouncePass::execute(FrameContext& frame)
     v.normal.bindUnit(1);
     v.bounced.bindImage(0, 0, GL_WRITE_ONLY);
     program.use();
-    m_occupied.dispatchOverCells();
+    for (const OccupiedCellList* voxels : occupied)
+        voxels->dispatchOverCells();
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-    m_builder.buildBox(frame.shaders, v.bounced, res);
+    m_builder.listCells(frame.shaders, res, v.bounced.levels(), occupied);
+    m_builder.buildBox(frame.shaders, v.bounced);
     if (anisotropic)
         m_builder.buildDirectional(frame.shaders, v.bounced, res, v.bouncedDirectional);
     else

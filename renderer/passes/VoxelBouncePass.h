@@ -31,7 +31,6 @@ private:
     gl::Program m_program;
     gl::Program m_anisotropicProgram;
     VoxelMipBuilder m_builder;
-    OccupiedCellList m_occupied;
     std::uint64_t m_radianceVersion = 0;
     GatherKey m_key{};
 };

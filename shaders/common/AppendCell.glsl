@@ -1,7 +1,12 @@
 // The listing side of core/OccupiedCellList: appendCell() adds a cell for the heavy pass and keeps the
-// indirect dispatch's workgroup count (x; y = z = 1, then the count) large enough to cover it.
-layout(std430, binding = 0) buffer OccupiedDispatch { uint uGroupsX; uint uGroupsY; uint uGroupsZ; uint uCount; };
-layout(std430, binding = 1) writeonly buffer OccupiedCells { uint uCells[]; };
+// indirect dispatch's workgroup count (x; y = z = 1, then the count) large enough to cover it. The list is
+// bound at storage buffers APPEND_BINDING and the next (0 and 1 unless defined), so a shader can read one list
+// (common/OccupiedCells.glsl) while it appends to another.
+#ifndef APPEND_BINDING
+#define APPEND_BINDING 0
+#endif
+layout(std430, binding = APPEND_BINDING) buffer OccupiedDispatch { uint uGroupsX; uint uGroupsY; uint uGroupsZ; uint uCount; };
+layout(std430, binding = APPEND_BINDING + 1) writeonly buffer OccupiedCells { uint uCells[]; };
 
 uniform uint uGroupSize; // the heavy shader's local_size_x
 

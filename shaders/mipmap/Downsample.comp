@@ -1,6 +1,9 @@
 // One mip level from the one below: the mean of the 2x2x2 children (a box filter of premultiplied radiance
-// and opacity, which is what a wider cone sees).
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+// and opacity, which is what a wider cone sees), over the listed cells (common/OccupiedCells.glsl,
+// VoxelMipBuilder); the level is cleared first.
+#include "common/OccupiedCells.glsl"
+
+layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uSource;
 layout(rgba16f, binding = 0) writeonly uniform image3D uTarget;
@@ -8,8 +11,8 @@ uniform int uSourceLevel;
 
 void main()
 {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(voxel, imageSize(uTarget))))
+    ivec3 voxel;
+    if (!occupiedCell(voxel))
         return;
     ivec3 base = voxel * 2;
     vec4 sum = vec4(0.0);

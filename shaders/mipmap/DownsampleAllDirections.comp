@@ -1,7 +1,10 @@
 // The first level of all six direction-dependent chains at once (see DownsampleDirectional.comp for one
 // chain): all six start from the same eight children of the isotropic level 0, so fetching them once instead
 // of once per direction takes the 3D fetches of the largest directional level from 48 to 8 per texel.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+// Over the listed cells only (common/OccupiedCells.glsl, VoxelMipBuilder); the level is cleared first.
+#include "common/OccupiedCells.glsl"
+
+layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uSource; // premultiplied radiance, a = opacity
 // The six chains' first level as tiles stacked along z, tile k from z = 2k tiles: +x, -x, +y, -y, +z, -z
@@ -28,9 +31,9 @@ vec4 composite(int axis, bool positive)
 
 void main()
 {
-    ivec3 voxel = ivec3(gl_GlobalInvocationID);
     int tileSize = imageSize(uTowards).x;
-    if (any(greaterThanEqual(voxel, ivec3(tileSize))))
+    ivec3 voxel;
+    if (!occupiedCell(voxel))
         return;
     for (int i = 0; i < 8; ++i)
         children[i] = texelFetch(uSource, voxel * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2), 0);
