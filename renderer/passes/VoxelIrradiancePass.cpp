@@ -127,6 +127,7 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     ConeTracingSetup::apply(program, frame, anisotropic, true);
     program.set("uResolution", res);
     program.set("uCellSize", cellSize);
+    program.set("uOne", 1);
     program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
     program.set("uAoDistance", 0.1f * v.frame.extent);
     v.albedo.bindUnit(0);

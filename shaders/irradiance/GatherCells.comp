@@ -26,6 +26,7 @@ layout(rgba16f, binding = 2) writeonly uniform image3D uCellNormal;
 uniform int uResolution; // voxels per side
 uniform int uCellSize;   // voxels per cell side
 uniform float uConeOffset; // metres along the normal
+uniform int uOne;          // 1
 
 const vec4 kNone = vec4(0.0, 0.0, 0.0, -1.0);
 
@@ -71,25 +72,33 @@ void main()
     }
     vec3 centre = uGridOrigin + positionSum / occupied * uVoxelSize;
     float normalLength = length(normalSum);
-    if (normalLength >= 0.5 * occupied) {
-        vec3 n = normalSum / normalLength;
-        imageStore(uIrradiance, cell, gatherDiffuse(centre + n * uConeOffset, n));
-        imageStore(uIrradianceBack, cell, kNone);
-        imageStore(uCellNormal, cell, vec4(n, 1.0));
-        return;
-    }
-    // Faces cancel: take the axis whose two neighbouring cells are emptiest, and gather both ways along it.
-    float best = 3.0;
-    vec3 n = vec3(0.0, 0.0, 1.0);
-    for (int axis = 0; axis < 3; ++axis) {
-        ivec3 step = ivec3(axis == 0, axis == 1, axis == 2);
-        float opacity = cellOccupancy(cell, step) + cellOccupancy(cell, -step);
-        if (opacity < best) {
-            best = opacity;
-            n = vec3(step);
+    bool twoSided = normalLength < 0.5 * occupied;
+    vec3 n = twoSided ? vec3(0.0, 0.0, 1.0) : normalSum / normalLength;
+    if (twoSided) {
+        // Faces cancel: take the axis whose two neighbouring cells are emptiest, and gather both ways along it.
+        float best = 3.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            ivec3 step = ivec3(axis == 0, axis == 1, axis == 2);
+            float opacity = cellOccupancy(cell, step) + cellOccupancy(cell, -step);
+            if (opacity < best) {
+                best = opacity;
+                n = vec3(step);
+            }
         }
     }
-    imageStore(uIrradiance, cell, gatherDiffuse(centre + n * uConeOffset, n));
-    imageStore(uIrradianceBack, cell, gatherDiffuse(centre - n * uConeOffset, -n));
-    imageStore(uCellNormal, cell, vec4(n, 2.0));
+    imageStore(uCellNormal, cell, vec4(n, twoSided ? 2.0 : 1.0));
+    imageStore(uIrradianceBack, cell, kNone);
+    // The gather appears once, in a loop over the sides: llvmpipe runs all code of a shader in every lane, so
+    // three gathers written out (one side, or two) cost every cell the first steps of fifteen cones, and the
+    // second pass of this loop runs only where a lane has a second side. uOne keeps the compiler from
+    // unrolling it back into two copies.
+    int sides = (twoSided ? 2 : 1) * uOne;
+    for (int side = 0; side < sides; ++side) {
+        vec3 direction = side == 0 ? n : -n;
+        vec4 gathered = gatherDiffuse(centre + direction * uConeOffset, direction);
+        if (side == 0)
+            imageStore(uIrradiance, cell, gathered);
+        else
+            imageStore(uIrradianceBack, cell, gathered);
+    }
 }
