@@ -34,7 +34,7 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     // 8-bit and integer targets cannot hold NaN or Inf, so only float ones are checked (the g-buffer's packed
     // normal is made finite before it is packed).
     const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
-        {"g-buffer position", &screen.position}, {"indirect diffuse", &screen.indirectDiffuse},
+        {"indirect diffuse", &screen.indirectDiffuse},
         {"indirect upsampling guide", &screen.indirectGuide}, {"specular", &screen.specular},
         {"specular upsampling guide", &screen.specularGuide}, {"voxel normal", &voxels.normal},
         {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};

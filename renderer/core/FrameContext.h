@@ -7,6 +7,7 @@
 #include "core/ShaderLibrary.h"
 #include "scene/Camera.h"
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
@@ -48,6 +49,10 @@ struct FrameContext {
     Camera camera;
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
+    /// Full-resolution pixel (x, y, 1) to the world-space ray through it whose component along the camera's
+    /// forward axis is 1: a surface at view depth z is camera.position + pixelToRay * (x, y, 1) * z
+    /// (shaders/common/GBufferSurface.glsl).
+    glm::mat3 pixelToRay{1.0f};
     /// Set only while vct-bench perf counts the cone pass's 3D texture fetches (an untimed shader variant).
     ConeSampleCounter* coneSampleCounter = nullptr;
 };

@@ -93,9 +93,8 @@ struct ShadowMaps {
 struct ScreenTargets {
     int width = 0, height = 0;
     int indirectDivisor = 1; ///< the indirect targets are width/divisor x height/divisor (rounded up)
-    gl::Texture position;  ///< rgba32f: world position, a = material index + 1 (GpuScene's table), 0 = no geometry.
-    /// rgba32ui: shading normal facing the camera, linear albedo (texture applied) and the front-face bit, packed
-    /// (shaders/common/GBufferSurface.glsl).
+    /// rgba32ui: the g-buffer's one target: normal, albedo, front face, material index and view depth, packed
+    /// (shaders/common/GBufferSurface.glsl); material 0 = no surface.
     gl::Texture surface;
     /// depth32f + stencil8: the stencil holds each pixel's class (common/PixelClass.glsl), from the g-buffer's
     /// materials, so the composite runs each shader variant on its own pixels only.

@@ -23,6 +23,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -100,16 +101,13 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int spec
     s.height = height;
     s.indirectDivisor = divisor;
     s.specularDivisor = specularDivisor;
-    s.position = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.surface = gl::Texture::create2D(GL_RGBA32UI, width, height);
     s.surface.setFilter(GL_NEAREST, GL_NEAREST);
     s.depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
     s.gbuffer = gl::Framebuffer::create();
-    int i = 0;
-    for (const gl::Texture* t : {&s.position, &s.surface})
-        s.gbuffer.attachColor(i++, *t);
+    s.gbuffer.attachColor(0, s.surface);
     s.gbuffer.attachDepth(s.depth);
-    s.gbuffer.finish(2);
+    s.gbuffer.finish(1);
     makeTracedGrid(width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
     makeTracedGrid(width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
     s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
@@ -142,6 +140,20 @@ CameraMatrices cameraMatrices(const Camera& camera, float aspect, const Aabb& bo
     const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
     return {glm::lookAt(camera.position, camera.lookAt, camera.up),
         glm::perspective(glm::radians(camera.fovYDeg), aspect, nearPlane, farPlane)};
+}
+
+glm::mat3 pixelToRay(const Camera& camera, int width, int height)
+{
+    // The columns of the view's rotation (right, up, back), as glm::lookAt builds it.
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up);
+    const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+    const glm::vec3 up(view[0][1], view[1][1], view[2][1]);
+    const glm::vec3 forward(-view[0][2], -view[1][2], -view[2][2]);
+    const float tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const float tanX = tanY * float(width) / float(height);
+    // Pixel x in [0, width] maps to ndc -1..1, times tanX along right, and likewise y; forward stays 1.
+    return glm::mat3(right * (2.0f * tanX / float(width)), up * (2.0f * tanY / float(height)),
+        forward - right * tanX - up * tanY);
 }
 
 } // namespace
@@ -283,10 +295,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
-        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), st.coneSampleCounter.get()};
+        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), glm::mat3(1.0f), st.coneSampleCounter.get()};
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     frame.view = matrices.view;
     frame.projection = matrices.projection;
+    frame.pixelToRay = pixelToRay(camera, width, height);
 
     if (st.coneSampleCounter)
         st.coneSampleCounter->reset();

@@ -43,7 +43,6 @@ void CompositePass::execute(FrameContext& frame)
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
-    s.position.bindUnit(0);
     s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     s.indirectDiffuse.bindUnit(5);
@@ -71,6 +70,7 @@ void CompositePass::execute(FrameContext& frame)
         program.use();
         applyLightUniforms(program, scene, frame.shadows);
         program.set("uCameraPosition", frame.camera.position);
+        program.set("uPixelToRay", frame.pixelToRay);
         program.set("uDivisor", s.indirectDivisor);
         program.set("uSpecularDivisor", s.specularDivisor);
         // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.

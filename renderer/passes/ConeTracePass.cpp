@@ -66,7 +66,6 @@ void ConeTracePass::execute(FrameContext& frame)
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
-    s.position.bindUnit(0);
     s.surface.bindUnit(1);
     frame.scene.bindMaterialTable(kMaterialTableUnit);
     if (counting)
@@ -85,6 +84,7 @@ void ConeTracePass::execute(FrameContext& frame)
         classify.set("uDivisor", divisor);
         classify.set("uFullSize", glm::ivec3(s.width, s.height, 0));
         classify.set("uCameraPosition", frame.camera.position);
+        classify.set("uPixelToRay", frame.pixelToRay);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glStencilMask(0x00);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -94,6 +94,8 @@ void ConeTracePass::execute(FrameContext& frame)
         ConeTracingSetup::apply(cones, frame, anisotropic, true);
         cones.set("uDivisor", divisor);
         cones.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+        cones.set("uCameraPosition", frame.camera.position);
+        cones.set("uPixelToRay", frame.pixelToRay);
         cones.use();
         glDrawArrays(GL_TRIANGLES, 0, 3);
     };

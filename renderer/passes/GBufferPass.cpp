@@ -20,10 +20,8 @@ void GBufferPass::execute(FrameContext& frame)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    const float zero[4] = {0, 0, 0, 0};
     const GLuint none[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(s.gbuffer.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferuiv(s.gbuffer.id(), GL_COLOR, 1, none);
+    glClearNamedFramebufferuiv(s.gbuffer.id(), GL_COLOR, 0, none);
     // Depth 1 and stencil 0: no surface, until the nearest one writes its pixel class.
     glClearNamedFramebufferfi(s.gbuffer.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     glEnable(GL_STENCIL_TEST);
@@ -48,6 +46,7 @@ void GBufferPass::execute(FrameContext& frame)
     for (const bool textured : {false, true}) {
         m_programs[textured].set("uViewProjection", viewProjection);
         m_programs[textured].set("uCameraPosition", camera.position);
+        m_programs[textured].set("uCameraForward", glm::normalize(camera.lookAt - camera.position));
         options.materials = [textured](const Material& m) { return (m.albedoTexture >= 0) == textured; };
         frame.scene.draw(m_programs[textured], options, 0);
     }

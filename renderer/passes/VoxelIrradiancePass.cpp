@@ -89,7 +89,9 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
     m_request.set("uCells", cells);
     m_request.set("uDivisor", s.indirectDivisor);
     m_request.set("uFullSize", glm::ivec3(s.width, s.height, 0));
-    s.position.bindUnit(0);
+    s.surface.bindUnit(1);
+    m_request.set("uCameraPosition", frame.camera.position);
+    m_request.set("uPixelToRay", frame.pixelToRay);
     v.irradianceRequested.bindImage(3, 0, GL_READ_WRITE);
     m_requestTarget.bind();
     glViewport(0, 0, width, height);

@@ -1,5 +1,5 @@
 // What the g-buffer does not store per pixel: the material's specular lobe and emission, looked up through
-// the material index the g-buffer keeps in gPosition.a (index + 1; 0 = no geometry). Two fewer render targets
+// the material index the g-buffer keeps (common/GBufferSurface.glsl: index + 1; 0 = no geometry). Two fewer render targets
 // took the atrium's g-buffer pass (1280x720, llvmpipe) from ~85 to ~70 ms. Filled by core/GpuScene.
 // A buffer texture rather than a shader storage buffer: with the storage buffer the composite ran ~9 ms
 // slower and gave most of that back.
@@ -9,7 +9,7 @@ struct MaterialEntry {
 };
 layout(binding = MATERIAL_TABLE_UNIT) uniform samplerBuffer uMaterialTable; // two rgba32f texels per material
 
-// positionA is gPosition.a at a pixel with geometry (> 0).
+// positionA is surfaceMaterial() at a pixel with geometry (> 0).
 MaterialEntry materialAt(float positionA)
 {
     int first = 2 * (int(positionA + 0.5) - 1);

@@ -21,7 +21,6 @@
 
 layout(early_fragment_tests) in;
 
-layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular; // at the specular grid
@@ -43,13 +42,13 @@ void main()
 {
     // The stencil test let only pixels of this variant's class through: there is a surface here.
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec4 position = texelFetch(gPosition, pixel, 0);
-    vec3 p = position.xyz;
     uvec4 surface = texelFetch(gSurface, pixel, 0);
+    vec3 fromCamera = surfaceFromCamera(surface, pixel);
+    vec3 p = uCameraPosition + fromCamera;
     vec3 n = surfaceNormal(surface);
     vec3 albedo = surfaceAlbedo(surface);
 #if defined(GLOSSY) || defined(EMISSION)
-    MaterialEntry material = materialAt(position.a);
+    MaterialEntry material = materialAt(surfaceMaterial(surface));
 #endif
 #ifdef GLOSSY
     float shininess = material.specularShininess.w;
@@ -59,7 +58,7 @@ void main()
     vec4 indirectDiffuse = vec4(0.0, 0.0, 0.0, 1.0);
 #if defined(INDIRECT_DIFFUSE) || VIEW == 4
 #ifdef UPSAMPLE
-    indirectDiffuse = upsampled(uIndirectDiffuse, upsamplingTaps(uIndirectGuide, uDivisor, pixel, p, n));
+    indirectDiffuse = upsampled(uIndirectDiffuse, upsamplingTaps(uIndirectGuide, uDivisor, pixel, fromCamera, n));
 #else
     indirectDiffuse = texelFetch(uIndirectDiffuse, pixel, 0);
 #endif
@@ -67,7 +66,7 @@ void main()
     vec3 indirectSpecular = vec3(0.0);
 #if defined(INDIRECT_SPECULAR) && defined(GLOSSY)
 #ifdef SPECULAR_UPSAMPLE
-    indirectSpecular = upsampled(uIndirectSpecular, upsamplingTaps(uSpecularGuide, uSpecularDivisor, pixel, p, n)).rgb;
+    indirectSpecular = upsampled(uIndirectSpecular, upsamplingTaps(uSpecularGuide, uSpecularDivisor, pixel, fromCamera, n)).rgb;
 #else
     indirectSpecular = texelFetch(uIndirectSpecular, pixel, 0).rgb;
 #endif
@@ -76,7 +75,7 @@ void main()
     vec3 direct = vec3(0.0);
 #if defined(DIRECT) && (VIEW == 0 || VIEW == 1)
 #ifdef GLOSSY
-    vec3 mirror = reflect(normalize(p - uCameraPosition), n);
+    vec3 mirror = reflect(normalize(fromCamera), n);
 #endif
     for (int i = 0; i < lightCount(); ++i) {
         vec3 toLight = lightDirection(i, p);

@@ -2,14 +2,14 @@
 // four nearest traced pixels, weighted bilinearly and by how well their surface (the tangent plane of the
 // full-resolution pixel each was traced from, kept in the grid's guide) matches this pixel's normal and
 // passes through this pixel, so light does not bleed across depth or orientation edges.
-// Needs uCameraPosition and uShadowOffset (half a voxel, metres).
+// Needs uShadowOffset (half a voxel, metres). fromCamera is this pixel's surface point relative to the camera.
 
 struct UpsamplingTaps {
     ivec2 texel[4];
     float weight[4]; // summing to one
 };
 
-UpsamplingTaps upsamplingTaps(sampler2D guide, int divisor, ivec2 pixel, vec3 p, vec3 n)
+UpsamplingTaps upsamplingTaps(sampler2D guide, int divisor, ivec2 pixel, vec3 fromCamera, vec3 n)
 {
     UpsamplingTaps taps;
     ivec2 gridSize = textureSize(guide, 0);
@@ -20,7 +20,6 @@ UpsamplingTaps upsamplingTaps(sampler2D guide, int divisor, ivec2 pixel, vec3 p,
     float bestSimilarity = -1.0;
     int best = 0;
     float planeScale = 1.0 / max(uShadowOffset * 2.0, 1e-6); // metres to voxels
-    vec3 fromCamera = p - uCameraPosition;
     for (int i = 0; i < 4; ++i) {
         ivec2 offset = ivec2(i & 1, i >> 1);
         ivec2 q = clamp(base + offset, ivec2(0), gridSize - 1);

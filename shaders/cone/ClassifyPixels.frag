@@ -11,7 +11,6 @@
 #include "common/MaterialTable.glsl"
 #include "cone/TracedPixel.glsl"
 
-layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 
 uniform vec3 uGridOrigin;
@@ -32,13 +31,13 @@ layout(location = 1) out vec4 oGuide;   // the traced pixel's tangent plane: nor
 void main()
 {
     ivec2 pixel = tracedPixel();
-    vec4 position = texelFetch(gPosition, pixel, 0);
     uvec4 surface = texelFetch(gSurface, pixel, 0);
     vec3 n = surfaceNormal(surface);
-    bool geometry = position.a > 0.0;
+    vec3 fromCamera = surfaceFromCamera(surface, pixel);
+    bool geometry = surfaceExists(surface);
     uint pixelClass = geometry ? PIXEL_GEOMETRY : 0u;
 #ifdef SPECULAR_GRID
-    MaterialEntry material = materialAt(max(position.a, 1.0));
+    MaterialEntry material = materialAt(max(surfaceMaterial(surface), 1.0));
     float shininess = material.specularShininess.w;
     vec3 specular = material.specularShininess.rgb;
     if (geometry && shininess > 0.0 && max(specular.r, max(specular.g, specular.b)) > 0.0)
@@ -48,7 +47,7 @@ void main()
     bool needsCones = geometry && uDiffuseEnabled;
 #ifdef IRRADIANCE_CACHE
     vec4 cached;
-    if (needsCones && lookUpIrradiance(position.xyz, n, cached)) {
+    if (needsCones && lookUpIrradiance(uCameraPosition + fromCamera, n, cached)) {
         oDiffuse = cached;
         needsCones = false;
     }
@@ -57,6 +56,6 @@ void main()
         pixelClass |= PIXEL_NEEDS_CONES;
 #endif
     // Relative to the camera, so the offset keeps its precision in a scene far from the origin.
-    oGuide = geometry ? vec4(n, dot(position.xyz - uCameraPosition, n)) : vec4(0.0);
+    oGuide = geometry ? vec4(n, dot(fromCamera, n)) : vec4(0.0);
     gl_FragStencilRefARB = int(pixelClass);
 }

@@ -8,18 +8,19 @@
 #include "cone/TracedPixel.glsl"
 #include "common/GBufferSurface.glsl"
 
-layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 
 uniform float uConeOffset; // metres along the normal
+uniform vec3 uCameraPosition;
 
 layout(location = 0) out vec4 oDiffuse; // rgb: sum_i w_i L_i, a: ambient visibility
 
 void main()
 {
     ivec2 pixel = tracedPixel();
-    vec3 p = texelFetch(gPosition, pixel, 0).xyz;
-    vec3 n = surfaceNormal(texelFetch(gSurface, pixel, 0));
+    uvec4 surface = texelFetch(gSurface, pixel, 0);
+    vec3 p = uCameraPosition + surfaceFromCamera(surface, pixel);
+    vec3 n = surfaceNormal(surface);
     oDiffuse = gatherDiffuse(p + n * uConeOffset, n);
     countSamples();
 }

@@ -8,7 +8,6 @@
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 
-layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform usampler2D gSurface;
 
 uniform float uConeOffset; // metres along the normal
@@ -20,14 +19,15 @@ layout(location = 0) out vec4 oSpecular;
 void main()
 {
     ivec2 pixel = tracedPixel();
-    vec4 position = texelFetch(gPosition, pixel, 0);
-    vec3 n = surfaceNormal(texelFetch(gSurface, pixel, 0));
-    float shininess = materialAt(position.a).specularShininess.w;
-    vec3 mirror = reflect(normalize(position.xyz - uCameraPosition), n);
+    uvec4 surface = texelFetch(gSurface, pixel, 0);
+    vec3 fromCamera = surfaceFromCamera(surface, pixel);
+    vec3 n = surfaceNormal(surface);
+    float shininess = materialAt(surfaceMaterial(surface)).specularShininess.w;
+    vec3 mirror = reflect(normalize(fromCamera), n);
     // Half-angle where the Phong lobe cos^n falls to one half, never narrower than the set minimum.
     float lobeHalf = acos(pow(0.5, 1.0 / max(shininess, 1e-3)));
     float tanHalf = max(tan(min(lobeHalf, 1.5)), uSpecularMinTanHalf);
     float unused;
-    oSpecular = vec4(traceCone(position.xyz + n * uConeOffset, mirror, tanHalf, unused).rgb, 1.0);
+    oSpecular = vec4(traceCone(uCameraPosition + fromCamera + n * uConeOffset, mirror, tanHalf, unused).rgb, 1.0);
     countSamples();
 }

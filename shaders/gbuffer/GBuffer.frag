@@ -4,17 +4,18 @@ in vec2 vUv;
 
 // TEXTURED: the variant for materials with an albedo texture (passes/GBufferPass); the others skip the fetch,
 // which cost the atrium's untextured g-buffer ~17 ms at 1280x720.
+#define GBUFFER_WRITER
 #include "common/GBufferSurface.glsl"
 
 uniform vec3 uAlbedo;
 uniform int uMaterialIndex; // into the material table (common/MaterialTable.glsl): specular, emission
 uniform vec3 uCameraPosition;
+uniform vec3 uCameraForward; // unit
 #ifdef TEXTURED
 layout(binding = 0) uniform sampler2D uAlbedoTexture;
 #endif
 
-layout(location = 0) out vec4 oPosition; // world position, a = material index + 1 (0 = no geometry)
-layout(location = 1) out uvec4 oSurface; // common/GBufferSurface.glsl: normal facing the camera, albedo, front face
+layout(location = 0) out uvec4 oSurface; // common/GBufferSurface.glsl
 
 void main()
 {
@@ -26,11 +27,10 @@ void main()
     // Surfaces are shaded from the side the camera sees; emission is one-sided (front faces only).
     if (!gl_FrontFacing)
         n = -n;
-    oPosition = vec4(vWorld, float(uMaterialIndex + 1));
 #ifdef TEXTURED
     vec3 albedo = uAlbedo * texture(uAlbedoTexture, vUv).rgb;
 #else
     vec3 albedo = uAlbedo;
 #endif
-    oSurface = packSurface(n, albedo, gl_FrontFacing);
+    oSurface = packSurface(n, albedo, gl_FrontFacing, uMaterialIndex, dot(vWorld - uCameraPosition, uCameraForward));
 }

@@ -3,10 +3,13 @@
 // for the current voxel light. irradiance/ListRequested.comp then lists the marked cells that hold voxels for
 // the gather (passes/VoxelIrradiancePass), so cells no traced pixel looks at are never gathered and a camera
 // move gathers only the cells that came into view.
-layout(binding = 0) uniform sampler2D gPosition;
+#include "common/GBufferSurface.glsl"
+
+layout(binding = 1) uniform usampler2D gSurface;
 layout(r32ui, binding = 3) uniform coherent uimage3D uRequested;
 
 uniform vec3 uGridOrigin;
+uniform vec3 uCameraPosition;
 uniform float uCellSize; // metres
 uniform int uCells;      // cells per side
 uniform int uDivisor;    // one traced pixel stands for uDivisor x uDivisor screen pixels
@@ -17,12 +20,13 @@ uniform ivec3 uFullSize; // full-resolution width, height
 void main()
 {
     ivec2 pixel = min(ivec2(gl_FragCoord.xy) * uDivisor + uDivisor / 2, uFullSize.xy - 1);
-    vec4 position = texelFetch(gPosition, pixel, 0);
-    if (position.a <= 0.0)
+    uvec4 surface = texelFetch(gSurface, pixel, 0);
+    if (!surfaceExists(surface))
         return;
+    vec3 position = uCameraPosition + surfaceFromCamera(surface, pixel);
     ivec3 base;
     vec3 f;
-    irradianceCellBlock(position.xyz, uGridOrigin, uCellSize, base, f);
+    irradianceCellBlock(position, uGridOrigin, uCellSize, base, f);
     for (int i = 0; i < 8; ++i) {
         ivec3 c = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
         if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(uCells))))
