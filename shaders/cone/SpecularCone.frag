@@ -8,6 +8,10 @@
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 
+// The stencil test must reject pixels before the shader runs even in the COUNT_SAMPLES variant, whose
+// atomics would otherwise make it run, and count, everywhere.
+layout(early_fragment_tests) in;
+
 layout(binding = 1) uniform usampler2D gSurface;
 
 uniform float uConeOffset; // metres along the normal
