@@ -41,6 +41,8 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     const int levels = v.frame.levelCount();
     // One r32f atlas holds the ten running sums, a 4 x 3 block per voxel (see common/VoxelAccumulators.glsl).
     v.accumulators = gl::Texture::create3D(GL_R32F, 4 * res, 3 * res, res);
+    const float zero = 0.0f;
+    glClearTexImage(v.accumulators.id(), 0, GL_RED, GL_FLOAT, &zero);
     v.dynamicBounds = Aabb{};
     v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
     v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
@@ -58,11 +60,9 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
-    // Only the region the meshes can touch needs zero sums: clearing the whole atlas costs more than drawing.
-    const float zero = 0.0f;
+    // The sums are all zero here: the atlas is cleared once when allocated, and each resolve zeroes the sums
+    // it read (voxelize/Resolve.comp).
     const glm::ivec3 size = region.size();
-    glClearTexSubImage(v.accumulators.id(), 0, 4 * region.lo.x, 3 * region.lo.y, region.lo.z, 4 * size.x, 3 * size.y,
-        size.z, GL_RED, GL_FLOAT, &zero);
     touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
@@ -116,7 +116,7 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
             glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    v.accumulators.bindImage(0, 0, GL_READ_ONLY);
+    v.accumulators.bindImage(0, 0, GL_READ_WRITE);
     for (int i = 0; i < 3; ++i)
         outputs[i]->bindImage(GLuint(1 + i), 0, GL_WRITE_ONLY);
     m_resolve.use();

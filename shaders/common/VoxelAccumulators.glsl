@@ -12,6 +12,7 @@
 #define ACC_EMISSION_R 7
 #define ACC_EMISSION_G 8
 #define ACC_EMISSION_B 9
+#define ACC_SLOTS 10
 
 ivec3 accumulatorCoord(ivec3 voxel, int slot, int resolution)
 {
