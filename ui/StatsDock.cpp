@@ -43,7 +43,9 @@ StatsDock::StatsDock(QWidget* parent)
     m_table->setObjectName(QStringLiteral("passTable"));
     m_table->setHorizontalHeaderLabels({ tr("Pass"), tr("Action"), tr("Reason"), tr("GPU (ms)") });
     m_table->horizontalHeaderItem(ActionColumn)->setToolTip(tr("run, reused (inputs unchanged) or skipped"));
-    m_table->horizontalHeaderItem(GpuColumn)->setToolTip(tr("GPU time from timer queries; 0 unless it ran"));
+    m_table->horizontalHeaderItem(GpuColumn)->setToolTip(
+        tr("GPU time from timer queries, of the frame before this one in the viewport (reading this frame's would "
+           "stall it); — where the pass did not run then"));
     m_table->verticalHeader()->hide();
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -81,9 +83,11 @@ void StatsDock::showStats(const render::FrameStats& stats)
     for (int row = 0; row < int(stats.passes.size()); ++row) {
         const render::PassStats& pass = stats.passes[std::size_t(row)];
         const bool ran = pass.action == "run";
+        // With the frame before's times a pass may have run then and not now, or the other way round.
+        const bool timed = stats.timesFromPreviousFrame ? pass.gpuMs > 0.0 : ran;
         const QString cells[ColumnCount] = { QString::fromStdString(pass.name),
             QString::fromStdString(pass.action), QString::fromStdString(pass.reason),
-            ran ? QString::number(pass.gpuMs, 'f', 3) : QStringLiteral("—") };
+            timed ? QString::number(pass.gpuMs, 'f', 3) : QStringLiteral("—") };
         for (int column = 0; column < ColumnCount; ++column) {
             QTableWidgetItem* item = m_table->item(row, column);
             if (!item) {

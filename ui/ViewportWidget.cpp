@@ -67,6 +67,8 @@ void ViewportWidget::initializeGL()
     ++m_contextGeneration;
     try {
         m_renderer = std::make_unique<render::Renderer>(qtProcAddress);
+        // The stats panel shows the frame before: waiting for this frame's timer results would stall the UI.
+        m_renderer->setTimesFromPreviousFrame(true);
         m_sync->apply(*m_renderer, true);
         m_error.clear();
     } catch (const std::exception& e) {
@@ -137,7 +139,10 @@ render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, ren
         return {};
     makeCurrent();
     m_sync->apply(*m_renderer);
+    // A frame rendered on request (export, comparison) reports its own times.
+    m_renderer->setTimesFromPreviousFrame(false);
     const render::FrameStats frameStats = m_renderer->renderFrame(m_document->state().camera, width, height);
+    m_renderer->setTimesFromPreviousFrame(true);
     if (stats)
         *stats = frameStats;
     render::RadianceImage image = m_renderer->readFrame();

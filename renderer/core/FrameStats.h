@@ -11,7 +11,7 @@ struct PassStats {
     std::string name;
     std::string action; ///< "run", "reused" or "skipped"
     std::string reason;
-    double gpuMs = 0.0; ///< GL timer query; 0 unless it ran.
+    double gpuMs = 0.0; ///< GL timer query; 0 unless it ran (in the previous frame, see FrameStats).
 };
 
 /** Per-frame figures for --stats, the benchmarks and the editor's stats panel. */
@@ -22,6 +22,9 @@ struct FrameStats {
     int width = 0, height = 0;
     int voxelResolution = 0;
     float voxelSize = 0.0f; ///< metres
+    /// The GPU times are those of the previous frame's passes (Pipeline::TimingReadback::PreviousFrame):
+    /// reading this frame's would stall the CPU until the frame is done.
+    bool timesFromPreviousFrame = false;
 };
 
 } // namespace vct::render

@@ -31,33 +31,51 @@ Pipeline::Pipeline(std::vector<std::unique_ptr<RenderPass>> passes)
                 throw std::logic_error(std::string("pass ") + pass->name() + " reads " + resourceName(r)
                     + " before any pass writes it");
         written.insert(written.end(), declaration.writes.begin(), declaration.writes.end());
-        m_timers.push_back(gl::TimerQuery::create());
+        for (auto& set : m_timers)
+            set.push_back(gl::TimerQuery::create());
     }
+    m_ranLastFrame.assign(m_passes.size(), false);
+}
+
+void Pipeline::setTimingReadback(TimingReadback readback)
+{
+    m_readback = readback;
+    m_ranLastFrame.assign(m_passes.size(), false);
 }
 
 FrameStats Pipeline::execute(FrameContext& frame)
 {
     FrameStats stats;
     std::vector<bool> ran(m_passes.size(), false);
+    std::vector<gl::TimerQuery>& timers = m_timers[m_currentSet];
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
         const PassDecision decision = pass.plan(frame);
         PassStats entry{pass.name(), "run", decision.reason, 0.0};
         if (decision.action == PassDecision::Action::Run) {
-            m_timers[i].begin();
+            timers[i].begin();
             pass.execute(frame);
-            m_timers[i].end();
+            timers[i].end();
             ran[i] = true;
         } else {
             entry.action = decision.action == PassDecision::Action::Reuse ? "reused" : "skipped";
         }
         stats.passes.push_back(entry);
     }
+    const bool previous = m_readback == TimingReadback::PreviousFrame;
+    // The previous frame's queries finished with it, so reading them does not wait for this frame's work.
+    const std::vector<gl::TimerQuery>& results = previous ? m_timers[1 - m_currentSet] : timers;
+    const std::vector<bool>& measured = previous ? m_ranLastFrame : ran;
     for (std::size_t i = 0; i < m_passes.size(); ++i)
-        if (ran[i]) {
-            stats.passes[i].gpuMs = m_timers[i].elapsedMs();
+        if (measured[i]) {
+            stats.passes[i].gpuMs = results[i].elapsedMs();
             stats.totalGpuMs += stats.passes[i].gpuMs;
         }
+    stats.timesFromPreviousFrame = previous;
+    if (previous) {
+        m_ranLastFrame = ran;
+        m_currentSet = 1 - m_currentSet;
+    }
     return stats;
 }
 

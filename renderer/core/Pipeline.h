@@ -12,17 +12,28 @@ namespace vct::render {
 /** Runs passes in order, each inside a GL timer query, and applies their run/reuse/skip decisions. */
 class Pipeline {
 public:
+    /** When a frame's timer results are read. */
+    enum class TimingReadback {
+        ThisFrame,     ///< execute() waits for them: exact per-frame figures (command lines, benchmarks, tests)
+        PreviousFrame, ///< execute() reports the frame before, whose results are in: no stall (the editor)
+    };
+
     /** Throws std::logic_error when a pass reads a resource no earlier pass writes. */
     explicit Pipeline(std::vector<std::unique_ptr<RenderPass>> passes);
 
-    /** Runs one frame; returns after the timer results are read back (the caller wants them now). */
+    /** Runs one frame and returns its decisions, with GPU times as setTimingReadback() says. */
     FrameStats execute(FrameContext& frame);
+    void setTimingReadback(TimingReadback readback);
     void invalidate();
     const std::vector<std::unique_ptr<RenderPass>>& passes() const { return m_passes; }
 
 private:
     std::vector<std::unique_ptr<RenderPass>> m_passes;
-    std::vector<gl::TimerQuery> m_timers;
+    /// Two sets, so a frame can issue into one while the previous frame's results are read from the other.
+    std::vector<gl::TimerQuery> m_timers[2];
+    std::vector<bool> m_ranLastFrame;
+    int m_currentSet = 0;
+    TimingReadback m_readback = TimingReadback::ThisFrame;
 };
 
 } // namespace vct::render

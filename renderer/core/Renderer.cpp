@@ -367,6 +367,11 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
     return drawn;
 }
 
+void Renderer::setTimesFromPreviousFrame(bool previousFrame)
+{
+    m_state->pipeline->setTimingReadback(previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
+}
+
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
     ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());

@@ -67,6 +67,11 @@ public:
         int y, int width, int height, float exposure);
     /** NaN/Inf texel counts of every float render target and voxel level (a readback per resource). */
     std::vector<NonFiniteCount> countNonFinite();
+    /**
+     * With @p previousFrame, renderFrame() reports the GPU times of the frame before and never waits for the
+     * one it issued (an interactive host); by default it waits for exact figures of the frame it rendered.
+     */
+    void setTimesFromPreviousFrame(bool previousFrame);
     /** Mip levels of the radiance volume (0 before the first frame). */
     int voxelLevelCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */

@@ -31,6 +31,7 @@ private slots:
     void noLightSourcesMeansNoIndirectLight();
     void secondBounceFollowsTheFirst();
     void irradianceCacheFollowsTheLight();
+    void timesCanComeFromThePreviousFrame();
 
 private:
     render::FrameStats planned();
@@ -357,6 +358,32 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
     planned();
     expectAction("irradiance cache", "skipped");
     QCOMPARE(m_gl.renderer->voxelBytes(), uncachedBytes);
+}
+
+// The editor reads the GPU times of the frame before, so it never waits for the frame it just issued: each
+// frame then reports the times of exactly the passes that ran in the one before.
+void RenderPlanTest::timesCanComeFromThePreviousFrame()
+{
+    m_gl.renderer->setTimesFromPreviousFrame(true);
+    m_gl.renderer->invalidate();
+    const render::FrameStats first = m_gl.renderer->renderFrame(m_camera, 40, 40);
+    QVERIFY(first.timesFromPreviousFrame);
+    QCOMPARE(first.totalGpuMs, 0.0); // nothing came before since the readback changed
+    m_camera.position += glm::vec3(0.02f, 0.0f, 0.0f);
+    const render::FrameStats second = m_gl.renderer->renderFrame(m_camera, 40, 40);
+    QVERIFY(second.totalGpuMs > 0.0);
+    for (std::size_t i = 0; i < first.passes.size(); ++i) {
+        const bool ranBefore = first.passes[i].action == "run";
+        QVERIFY2((second.passes[i].gpuMs > 0.0) == ranBefore, first.passes[i].name.c_str());
+    }
+    // The shadow maps ran in the first frame only: the second reuses them but reports their time.
+    QCOMPARE(second.passes.front().action, std::string("reused"));
+    QVERIFY(second.passes.front().gpuMs > 0.0);
+    m_gl.renderer->setTimesFromPreviousFrame(false);
+    const render::FrameStats exact = m_gl.renderer->renderFrame(m_camera, 40, 40);
+    QVERIFY(!exact.timesFromPreviousFrame);
+    for (const render::PassStats& p : exact.passes)
+        QVERIFY2((p.gpuMs > 0.0) == (p.action == "run"), p.name.c_str());
 }
 
 QTEST_GUILESS_MAIN(RenderPlanTest)
