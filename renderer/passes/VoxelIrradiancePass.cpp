@@ -68,13 +68,20 @@ void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellVoxels)
+void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew)
 {
-    if (!m_request) {
-        m_request = frame.shaders.build({"irradiance cache: request cells", {"common/FullScreen.vert", "irradiance/RequestCells.frag"}, {}});
-        m_listRequested = frame.shaders.build({"irradiance cache: list requested cells", {"irradiance/ListRequested.comp"}, {}});
+    if (!m_request[0]) {
+        const std::vector<std::string> stages{"common/FullScreen.vert", "irradiance/RequestCells.frag"};
+        m_request[0] = frame.shaders.build({"irradiance cache: request cells", stages, {}});
+        m_request[1] = frame.shaders.build({"irradiance cache: request and list new cells", stages, {"LIST_NEW"}});
+        m_listRequested[0] = frame.shaders.build({"irradiance cache: list requested cells", {"irradiance/ListRequested.comp"}, {}});
+        m_listRequested[1] = frame.shaders.build({"irradiance cache: list requested cells, from the new ones",
+            {"irradiance/ListRequested.comp"}, {"FROM_LIST"}});
         m_emptyVao = gl::VertexArray::create();
     }
+    gl::Program& request = m_request[fewNew ? 1 : 0];
+    gl::Program& lister = m_listRequested[fewNew ? 1 : 0];
+    const std::size_t capacity = std::size_t(cells) * std::size_t(cells) * std::size_t(cells);
     VoxelVolume& v = frame.voxels;
     const ScreenTargets& s = frame.screen;
     const int width = s.indirectDiffuse.width(), height = s.indirectDiffuse.height();
@@ -83,15 +90,18 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
         m_requestWidth = width;
         m_requestHeight = height;
     }
-    m_request.use();
-    m_request.set("uGridOrigin", v.frame.origin);
-    m_request.set("uCellSize", v.frame.extent / float(cells));
-    m_request.set("uCells", cells);
-    m_request.set("uDivisor", s.indirectDivisor);
-    m_request.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+    if (fewNew)
+        m_newCells.reset(capacity);
+    request.use();
+    request.set("uGroupSize", OccupiedCellList::kGroupSize);
+    request.set("uGridOrigin", v.frame.origin);
+    request.set("uCellSize", v.frame.extent / float(cells));
+    request.set("uCellsPerSide", cells);
+    request.set("uDivisor", s.indirectDivisor);
+    request.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     s.surface.bindUnit(1);
-    m_request.set("uCameraPosition", frame.camera.position);
-    m_request.set("uPixelToRay", frame.pixelToRay);
+    request.set("uCameraPosition", frame.camera.position);
+    request.set("uPixelToRay", frame.pixelToRay);
     v.irradianceRequested.bindImage(3, 0, GL_READ_WRITE);
     m_requestTarget.bind();
     glViewport(0, 0, width, height);
@@ -100,13 +110,20 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     v.albedo.bindUnit(0);
-    m_listRequested.use();
-    m_listRequested.set("uCellSize", cellVoxels);
-    m_requested.buildWith(m_listRequested, VoxelRegion::whole(cells));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    lister.use();
+    lister.set("uCellSize", cellVoxels);
+    if (fewNew) {
+        m_requested.reset(capacity, 2);
+        lister.set("uGroupSize", OccupiedCellList::kGroupSize);
+        m_newCells.dispatchOverCells();
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    } else {
+        m_requested.buildWith(lister, VoxelRegion::whole(cells));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
 }
 
 void VoxelIrradiancePass::execute(FrameContext& frame)
@@ -121,9 +138,10 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
-    if (!(v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key) || v.irradiance.width() != cells)
+    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key) || v.irradiance.width() != cells;
+    if (fresh)
         forgetCells(v, cells);
-    requestCells(frame, cells, cellSize);
+    requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
     ConeTracingSetup::apply(program, frame, anisotropic, true);

@@ -56,16 +56,20 @@ private:
     static ViewKey viewOf(const FrameContext& frame);
     /** Fresh textures, nothing gathered: after the voxel light or a gather setting changed. */
     void forgetCells(VoxelVolume& voxels, int cells);
-    /** Lists the cells the traced pixels look up that hold voxels and were not gathered yet. */
-    void requestCells(FrameContext& frame, int cells, int cellVoxels);
+    /**
+     * Lists the cells the traced pixels look up that hold voxels and were not gathered yet; @p fewNew after a
+     * camera move (the pixels list the new cells themselves), otherwise in grid order over every cell.
+     */
+    void requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew);
 
     gl::Program m_gather[2]; ///< [0] box-filtered mips, [1] anisotropic
-    gl::Program m_request;
-    gl::Program m_listRequested;
+    gl::Program m_request[2];       ///< [1]: LIST_NEW
+    gl::Program m_listRequested[2]; ///< [1]: FROM_LIST
     gl::Framebuffer m_requestTarget; ///< no attachments, the traced pixels' size
     int m_requestWidth = 0, m_requestHeight = 0;
     gl::VertexArray m_emptyVao;
-    OccupiedCellList m_requested;
+    OccupiedCellList m_newCells;  ///< listed by the request pass after a camera move
+    OccupiedCellList m_requested; ///< the cells to gather
     std::uint64_t m_radianceVersion = 0;
     GatherKey m_key{};
     ViewKey m_view;
