@@ -16,6 +16,7 @@ void main()
     if (!occupiedCell(child))
         return;
     ivec3 parent = child >> 1;
-    if ((imageAtomicOr(uListed, parent, uLevelBit) & uLevelBit) == 0u)
+    // A plain load first: most parents were listed already by a sibling, and atomics cost.
+    if ((imageLoad(uListed, parent).r & uLevelBit) == 0u && (imageAtomicOr(uListed, parent, uLevelBit) & uLevelBit) == 0u)
         appendCell(parent);
 }
