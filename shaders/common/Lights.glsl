@@ -36,7 +36,7 @@ float pointLightVisibility(int i, vec3 p)
     // component, and the stored window depth inverts to it through the face's perspective projection.
     vec3 a = abs(fromLight);
     float viewDepth = max(a.x, max(a.y, a.z));
-    float depth = texture(uPointShadow, vec4(fromLight, float(i))).r;
+    float depth = textureLod(uPointShadow, vec4(fromLight, float(i)), 0.0).r;
     float n = uPointShadowNear;
     float f = uPointShadowFar;
     float stored = n * f / (f - depth * (f - n));
@@ -51,7 +51,7 @@ float directionalLightVisibility(int i, vec3 p)
     vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
     if (any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
         return 1.0;
-    float stored = texture(uDirectionalShadow, vec3(coord.xy, float(i))).r;
+    float stored = textureLod(uDirectionalShadow, vec3(coord.xy, float(i)), 0.0).r;
     return coord.z <= stored + 2e-3 ? 1.0 : 0.0;
 }
 

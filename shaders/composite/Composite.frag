@@ -77,14 +77,27 @@ void main()
 #ifdef GLOSSY
     vec3 mirror = reflect(normalize(fromCamera), n);
 #endif
-    for (int i = 0; i < lightCount(); ++i) {
-        vec3 toLight = lightDirection(i, p);
-        float cosTheta = dot(n, toLight);
-        if (cosTheta <= 0.0)
-            continue;
-        vec3 irradiance = lightIrradiance(i, p, p + n * uShadowOffset) * cosTheta;
+    // One loop per light kind, each with its compile-time count: a loop over both kinds branched on the index,
+    // and llvmpipe ran the directional light's code for every pixel of a scene that has none (the atrium's
+    // composite 89 -> 58 ms at 1280x720).
+    for (int i = 0; i < kPointLightCount; ++i) {
+        vec3 d = uPointLightPosition[i].xyz - p;
+        float distance2 = max(dot(d, d), 1e-8);
+        vec3 toLight = d * inversesqrt(distance2);
+        float cosTheta = max(dot(n, toLight), 0.0);
+        vec3 irradiance = uPointLightIntensity[i].rgb / distance2 * pointLightVisibility(i, p + n * uShadowOffset) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY // normalised modified Phong
+        brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
+#endif
+        direct += brdf * irradiance;
+    }
+    for (int i = 0; i < kDirectionalLightCount; ++i) {
+        vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);
+        float cosTheta = max(dot(n, toLight), 0.0);
+        vec3 irradiance = uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, p + n * uShadowOffset) * cosTheta;
+        vec3 brdf = albedo / kPi;
+#ifdef GLOSSY
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
 #endif
         direct += brdf * irradiance;
