@@ -25,12 +25,10 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
             glProgramUniformMatrix4fv(program.id(), program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()),
                 1, GL_FALSE, &shadows.directionalMatrices[std::size_t(i)][0][0]);
     }
-    program.set("uPointLightCount", points);
     program.set("uPointLightPosition", positions);
     program.set("uPointLightIntensity", intensities);
     program.set("uPointShadowNear", shadows.pointNear);
     program.set("uPointShadowFar", shadows.pointFar);
-    program.set("uDirectionalLightCount", directionals);
     program.set("uDirectionalLightDirection", directions);
     program.set("uDirectionalLightIrradiance", irradiances);
     // Samplers must always see a texture of their type, even with no light of that kind.

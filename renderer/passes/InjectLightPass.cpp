@@ -4,6 +4,9 @@
 #include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
+#include <algorithm>
+#include <string>
+
 namespace vct::render {
 
 std::array<std::uint64_t, 4> InjectLightPass::keyOf(const FrameContext& frame) const
@@ -81,8 +84,13 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
 
 void InjectLightPass::execute(FrameContext& frame)
 {
-    if (!m_program)
-        m_program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"}, {}});
+    const Scene& scene = frame.scene.scene();
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    gl::Program& program = m_programs[{points, directionals}];
+    if (!program)
+        program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"},
+            {"POINT_LIGHT_COUNT " + std::to_string(points), "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals)}});
     const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;
@@ -101,12 +109,12 @@ void InjectLightPass::execute(FrameContext& frame)
         m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
     }
 
-    m_program.use();
-    applyLightUniforms(m_program, frame.scene.scene(), frame.shadows);
-    m_program.set("uGridOrigin", v.frame.origin);
-    m_program.set("uVoxelSize", v.frame.voxelSize());
-    m_program.set("uEmissionEnabled", FrameRules::emissionNeeded(frame) ? 1 : 0);
-    m_program.set("uDirectEnabled", frame.settings.direct ? 1 : 0);
+    program.use();
+    applyLightUniforms(program, scene, frame.shadows);
+    program.set("uGridOrigin", v.frame.origin);
+    program.set("uVoxelSize", v.frame.voxelSize());
+    program.set("uEmissionEnabled", FrameRules::emissionNeeded(frame) ? 1 : 0);
+    program.set("uDirectEnabled", frame.settings.direct ? 1 : 0);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.emission.bindUnit(2);

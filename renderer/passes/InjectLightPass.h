@@ -6,6 +6,8 @@
 #include "gl/Program.h"
 
 #include <array>
+#include <map>
+#include <utility>
 #include <cstdint>
 
 namespace vct::render {
@@ -30,7 +32,7 @@ private:
     std::array<std::uint64_t, 4> keyOf(const FrameContext& frame) const;
     /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
-    gl::Program m_program;
+    std::map<std::pair<int, int>, gl::Program> m_programs; ///< by point and directional light count
     OccupiedCellList m_occupied;
     std::array<std::uint64_t, 4> m_key{};
 };

@@ -19,6 +19,14 @@ uniform bool uDirectEnabled;
 
 const float kPi = 3.14159265358979;
 
+// The side a voxel is lit on: its normal; for faces that cancel (a thin two-sided wall) whichever side the
+// light is on, and a voxel with no normal at all faces the light.
+vec3 facingLight(vec3 n, float normalLength, vec3 toLight)
+{
+    vec3 facing = normalLength > 0.5 ? n : (dot(n, toLight) >= 0.0 ? n : -n);
+    return normalLength <= 1e-4 ? toLight : facing;
+}
+
 void main()
 {
     ivec3 voxel;
@@ -30,19 +38,25 @@ void main()
     vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
     vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
 
+    // One loop per light kind with compile-time counts (passes/InjectLightPass): a loop over both kinds
+    // branching on the index runs every kind's code for every voxel on llvmpipe.
     vec3 radiance = vec3(0.0);
     if (uDirectEnabled) {
-        for (int i = 0; i < lightCount(); ++i) {
-            vec3 toLight = lightDirection(i, p);
-            // Faces that cancel (a thin two-sided wall) are lit from whichever side the light is on.
-            vec3 facing = normalLength > 0.5 ? n : (dot(n, toLight) >= 0.0 ? n : -n);
-            if (normalLength <= 1e-4)
-                facing = toLight;
-            float cosTheta = max(dot(facing, toLight), 0.0);
-            if (cosTheta <= 0.0)
-                continue;
-            vec3 shadowPoint = p + facing * uVoxelSize;
-            radiance += albedo.rgb / kPi * lightIrradiance(i, p, shadowPoint) * cosTheta;
+        for (int i = 0; i < kPointLightCount; ++i) {
+            vec3 d = uPointLightPosition[i].xyz - p;
+            // A floor only at the light itself, relative to the scene as every bias is: an absolute one would bend
+            // the light of a scene measured in 1e-4 units (tests/hardcases, scale invariance).
+            float distance2 = max(dot(d, d), uPointShadowNear * uPointShadowNear);
+            vec3 toLight = normalize(d);
+            vec3 facing = facingLight(n, normalLength, toLight);
+            float visibility = pointLightVisibility(i, p + facing * uVoxelSize);
+            radiance += albedo.rgb / kPi * uPointLightIntensity[i].rgb / distance2 * visibility * max(dot(facing, toLight), 0.0);
+        }
+        for (int i = 0; i < kDirectionalLightCount; ++i) {
+            vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);
+            vec3 facing = facingLight(n, normalLength, toLight);
+            float visibility = directionalLightVisibility(i, p + facing * uVoxelSize);
+            radiance += albedo.rgb / kPi * uDirectionalLightIrradiance[i].rgb * visibility * max(dot(facing, toLight), 0.0);
         }
     }
     if (uEmissionEnabled)
