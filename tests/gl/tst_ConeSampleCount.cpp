@@ -66,16 +66,13 @@ void ConeSampleCountTest::countMatchesTheConeLoop()
     renderer.setGridBounds(test::box({ -8.0f, -1.0f, -8.0f }, { 8.0f, 7.0f, 8.0f }));
     renderer.renderFrame(camera, kSize, kSize);
 
-    // The cone loop of shaders/cone/ConeTrace.frag without its exits on opacity and on leaving the grid,
+    // The cone loop of shaders/common/ConeTracing.glsl without its exits on opacity and on leaving the grid,
     // which this scene never reaches: the cone length ends it.
     const float voxel = renderer.voxelSize();
-    const float maxLevel = float(renderer.voxelLevelCount() - 1);
     const float tanHalf = std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f));
     std::vector<float> t { voxel };
-    std::vector<float> levels;
     for (int i = 0; i < 8; ++i) {
         const float d = render::conemath::coneDiameter(t.back(), tanHalf);
-        levels.push_back(render::conemath::coneMipLevel(d, voxel, maxLevel));
         t.push_back(t.back() + render::conemath::coneStepLength(d, voxel, settings.stepFactor));
     }
     const int steps = 4;
@@ -84,11 +81,9 @@ void ConeSampleCountTest::countMatchesTheConeLoop()
     QVERIFY2(settings.coneOffsetVoxels * voxel + t[steps - 1] < gridTop - voxel,
         qPrintable(QString::number(gridTop)));
     settings.maxDistance = 0.5f * (t[steps - 1] + t[steps]); // halfway, so float rounding cannot add a step
-    std::uint64_t fetchesPerPixel = 0;
-    for (int i = 0; i < steps; ++i)
-        fetchesPerPixel += !anisotropic || levels[std::size_t(i)] <= 0.0f ? 1
-            : levels[std::size_t(i)] < 1.0f                               ? 4
-                                                                          : 3;
+    // Box-filtered mips take one fetch a step; anisotropic ones four, level 0 and the three chains the
+    // direction weighs, blended by the level (shaders/common/ConeTracing.glsl).
+    const std::uint64_t fetchesPerPixel = std::uint64_t(steps) * (anisotropic ? 4 : 1);
     renderer.setSettings(settings);
 
     renderer.renderFrame(camera, kSize, kSize);
