@@ -100,6 +100,11 @@ void InjectLightPass::execute(FrameContext& frame)
     }
     // The region is cleared to zero radiance; the lighting then writes the occupied voxels only. Over the
     // whole grid the voxelizer's lists name them; a smaller region is searched.
+    // llvmpipe (Mesa 22.3) let this dispatch sample the shadow maps before the queued depth rendering into
+    // them had finished (tests/gl/tst_RenderPlan caught stale shadows after a light moved). A barrier here,
+    // where they are read, replaces the glFinish the shadow pass used to end with: the voxelizer's draws can
+    // be set up while the shadow faces are still being rasterised.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     const bool whole = region.size() == VoxelRegion::whole(v.frame.resolution).size();
     if (whole) {
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};

@@ -170,10 +170,6 @@ void ShadowMapPass::execute(FrameContext& frame)
             GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, size, size, shadows.directionalDepth.depth());
         drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::Dynamic, false);
     }
-    // llvmpipe (Mesa 22.3) lets later passes sample these maps before the queued depth rendering into them
-    // has finished (tests/gl/tst_RenderPlan caught stale shadows after a light moved; glFlush was not
-    // enough). Waiting here costs little: it happens only in frames that redraw the shadow maps.
-    glFinish();
     ++shadows.version;
 }
 
