@@ -77,6 +77,10 @@ MaterialDock::MaterialDock(QWidget* parent)
     m_texture->setObjectName(QStringLiteral("albedoTexture"));
     m_texture->setToolTip(tr("An albedo texture (sRGB) multiplies the albedo colour"));
 
+    m_doubleSided = new QCheckBox(tr("Double-sided"));
+    m_doubleSided->setObjectName(QStringLiteral("doubleSidedCheck"));
+    m_doubleSided->setToolTip(tr("Seen from both sides. Off: front faces only; back faces are left out of the "
+                                 "image and of shadows, which draws closed models faster"));
     m_emissive = new QCheckBox(tr("Emissive"));
     m_emissive->setObjectName(QStringLiteral("emissiveCheck"));
     m_emissive->setToolTip(tr("Emits light from the front face: radiance = colour × strength"));
@@ -119,6 +123,7 @@ MaterialDock::MaterialDock(QWidget* parent)
     form->addRow(tr("Strength"), m_strength);
     form->addRow(tr("Specular"), m_specular);
     form->addRow(tr("Shininess"), m_shininess);
+    form->addRow(QString(), m_doubleSided);
 
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -153,6 +158,8 @@ MaterialDock::MaterialDock(QWidget* parent)
         [this, edit] { edit([&](render::Material& m) { m.emission = uiEmission(); }); });
     connect(m_strength, &QDoubleSpinBox::valueChanged, this,
         [this, edit] { edit([&](render::Material& m) { m.emission = uiEmission(); }); });
+    connect(m_doubleSided, &QCheckBox::toggled, this,
+        [edit](bool on) { edit([&](render::Material& m) { m.doubleSided = on; }); });
     connect(m_emissive, &QCheckBox::toggled, this, [this, edit](bool on) {
         m_emissionColor->setEnabled(on);
         m_strength->setEnabled(on);
@@ -256,7 +263,7 @@ void MaterialDock::loadMaterial()
     const bool valid
         = m_document && m_material >= 0 && m_material < int(m_document->state().materials.size());
     for (QWidget* w : std::initializer_list<QWidget*> {
-             m_albedo, m_texture, m_emissive, m_emissionColor, m_strength, m_specular, m_shininess })
+             m_albedo, m_texture, m_emissive, m_emissionColor, m_strength, m_specular, m_shininess, m_doubleSided })
         w->setEnabled(valid);
     if (!valid) {
         m_texture->setText(tr("—"));
@@ -265,7 +272,9 @@ void MaterialDock::loadMaterial()
     }
     const render::Material& m = m_document->state().materials[std::size_t(m_material)];
 
-    const QSignalBlocker b1(m_albedo), b2(m_emissive), b3(m_emissionColor), b4(m_specular), b5(m_shininess);
+    const QSignalBlocker b1(m_albedo), b2(m_emissive), b3(m_emissionColor), b4(m_specular), b5(m_shininess),
+        b6(m_doubleSided);
+    m_doubleSided->setChecked(m.doubleSided);
     m_albedo->setColor(m.albedo);
     m_texture->setText(m.albedoTexture >= 0 ? tr("texture #%1 × albedo").arg(m.albedoTexture) : tr("none"));
     m_specular->setColor(m.specular);

@@ -75,6 +75,7 @@ private:
     ColorButton* m_albedo = nullptr;
     QLabel* m_texture = nullptr;
     QCheckBox* m_emissive = nullptr;
+    QCheckBox* m_doubleSided = nullptr;
     ColorButton* m_emissionColor = nullptr;
     QDoubleSpinBox* m_strength = nullptr;
     ColorButton* m_specular = nullptr;

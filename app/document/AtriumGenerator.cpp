@@ -252,6 +252,10 @@ void AtriumGenerator::generate(render::Scene& scene)
     const int stoneMaterial = addMaterial(scene, "atrium_stone", { 0.68f, 0.64f, 0.58f });
     const int columnMaterial = addMaterial(scene, "atrium_column", { 0.7f, 0.67f, 0.61f });
     const int floorMaterial = addMaterial(scene, "atrium_floor", { 0.5f, 0.45f, 0.39f });
+    // The building is seen from inside and lit from inside: its stone shows front faces only, which leaves
+    // the faces turned away out of the g-buffer and the shadow maps (the cloths, thin sheets, keep both).
+    for (const int m : { stoneMaterial, columnMaterial, floorMaterial })
+        scene.materials[std::size_t(m)].doubleSided = false;
     // Polished stone, as in the paper's courtyard: a faint glossy reflection exercises the specular cone.
     scene.materials[std::size_t(floorMaterial)].specular = glm::vec3(0.08f);
     scene.materials[std::size_t(floorMaterial)].shininess = 80.0f;

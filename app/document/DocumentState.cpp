@@ -7,7 +7,7 @@ namespace vct::doc {
 bool sameMaterial(const render::Material& a, const render::Material& b)
 {
     return a.name == b.name && a.albedo == b.albedo && a.emission == b.emission && a.specular == b.specular
-        && a.shininess == b.shininess && a.albedoTexture == b.albedoTexture;
+        && a.shininess == b.shininess && a.albedoTexture == b.albedoTexture && a.doubleSided == b.doubleSided;
 }
 
 bool sameCamera(const render::Camera& a, const render::Camera& b)

@@ -220,6 +220,10 @@ int sceneMaterial(ImportState& state, unsigned aiIndex)
         convertPhongSurface(source, material);
     material.albedo = sanitize(material.albedo);
     material.specular = sanitize(material.specular);
+    // glTF says whether a material is double-sided (Assimp: AI_MATKEY_TWOSIDED); formats that do not, stay so.
+    int twoSided = 1;
+    if (source->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS)
+        material.doubleSided = twoSided != 0;
 
     material.emission
         = sanitize(toGlm(colorOr(source, AI_MATKEY_COLOR_EMISSIVE, aiColor3D(0.0f, 0.0f, 0.0f))));

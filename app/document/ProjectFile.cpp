@@ -193,7 +193,9 @@ bool readMaterials(ProjectReader& r, const QJsonObject& root, DocumentState& out
             || !r.readFiniteVec3(o, "emission", path + "emission", &m.emission)
             || !r.readFiniteVec3(o, "specular", path + "specular", &m.specular)
             || !r.readFloat(o, "shininess", path + "shininess", 0.0f, &m.shininess)
-            || !r.readInt(o, "albedo_texture", path + "albedo_texture", -1, INT_MAX, &m.albedoTexture))
+            || !r.readInt(o, "albedo_texture", path + "albedo_texture", -1, INT_MAX, &m.albedoTexture)
+            // Absent from projects saved before single-sided materials existed: both sides, as then.
+            || (o.contains(QStringLiteral("double_sided")) && !r.readBool(o, "double_sided", path + "double_sided", &m.doubleSided)))
             return false;
         m.name = name.toStdString();
         out.materials.push_back(m);
@@ -333,7 +335,7 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
     for (const render::Material& m : state.materials)
         materials.append(QJsonObject{{"name", QString::fromStdString(m.name)}, {"albedo", toArray(m.albedo)},
             {"emission", toArray(m.emission)}, {"specular", toArray(m.specular)}, {"shininess", double(m.shininess)},
-            {"albedo_texture", m.albedoTexture}});
+            {"albedo_texture", m.albedoTexture}, {"double_sided", m.doubleSided}});
     QJsonArray nodes;
     for (const SceneNode& n : state.nodes)
         nodes.append(QJsonObject{{"id", qint64(n.id)}, {"name", n.name}, {"source", n.source}, {"mesh", n.mesh},

@@ -172,6 +172,12 @@ bool GpuScene::cullsBackFaces(std::size_t index, const Viewpoint& from) const
     return gpu.cullBack;
 }
 
+bool GpuScene::showsFrontOnly(std::size_t index) const
+{
+    // A mirroring transform turns GL's notion of front faces around: draw both sides then, as before.
+    return !materialOf(index).doubleSided && glm::determinant(glm::mat3(m_scene.meshes[index].transform)) > 0.0f;
+}
+
 void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const
 {
     program.use();
@@ -221,7 +227,7 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
             bindMesh(program, run.mesh, albedoUnit);
             if (options.stencilPixelClass)
                 glStencilFunc(GL_ALWAYS, GLint(pixelClassOf(materialOf(run.mesh))), 0xFF);
-            if (options.from && cullsBackFaces(run.mesh, *options.from)) {
+            if (options.from && (cullsBackFaces(run.mesh, *options.from) || showsFrontOnly(run.mesh))) {
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
             } else {

@@ -37,7 +37,8 @@ struct DrawOptions {
     /// Clusters of triangles wholly outside it are not drawn (core/MeshClusters); null: all are.
     const Frustum* visibleIn = nullptr;
     /// With a viewpoint, clusters are drawn nearest first, so early depth testing rejects what they hide, and
-    /// solid meshes (core/ClosedSurface) the view sees from outside are drawn without their back faces.
+    /// solid meshes (core/ClosedSurface) the view sees from outside, and meshes of single-sided materials,
+    /// are drawn without their back faces.
     /// Only for depth-tested views whose result does not depend on hidden faces.
     const Viewpoint* from = nullptr;
     /// Sets the stencil reference to each mesh's pixel class (core/PixelClass.h) before drawing it.
@@ -85,6 +86,8 @@ private:
     void bindMesh(const gl::Program& program, std::size_t mesh, GLuint albedoUnit) const;
     /** Whether back faces of the mesh can be left out of a view from @p from without changing what it sees. */
     bool cullsBackFaces(std::size_t mesh, const Viewpoint& from) const;
+    /** Whether the mesh's material shows front faces only (Material::doubleSided off). */
+    bool showsFrontOnly(std::size_t mesh) const;
     void uploadMaterialTable();
 
     Scene m_scene; // a copy: transforms and materials change through setters, meshes never

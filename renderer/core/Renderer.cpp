@@ -237,6 +237,11 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
     // Voxels hold albedo and emission only: a specular or gloss edit changes per-pixel shading alone.
     const bool voxelsAffected = index >= materials.size() || materials[index].albedo != material.albedo
         || materials[index].emission != material.emission || materials[index].albedoTexture != material.albedoTexture;
+    // Single-sided surfaces leave their back faces out of the shadow maps too: redraw them, and the light.
+    if (index < materials.size() && materials[index].doubleSided != material.doubleSided) {
+        ++m_state->versions.lightPlacement;
+        ++m_state->versions.lightValues;
+    }
     m_state->scene->setMaterial(index, material);
     if (!voxelsAffected)
         return;

@@ -18,6 +18,10 @@ struct Material {
     glm::vec3 specular{0.0f};      ///< Specular reflectance (OBJ Ks); albedo + specular <= 1.
     float shininess = 0.0f;        ///< Phong exponent (OBJ Ns); 0 means not glossy.
     int albedoTexture = -1;        ///< Index into Scene::textures (sRGB, multiplies albedo), or -1.
+    /// Seen from both sides: a back face is drawn and shaded from the side it is seen from. Off, the surface
+    /// shows its front faces only (glTF's doubleSided false): the g-buffer and the shadow maps leave its back
+    /// faces out, which costs no pixels on closed models seen from outside and spares their rasterisation.
+    bool doubleSided = true;
 
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool isGlossy() const

@@ -39,12 +39,24 @@ private slots:
     void initTestCase();
     void sameImage_data();
     void sameImage();
+    void singleSidedSolidsLookTheSameFromOutside();
+    void singleSidedSurfacesShowTheirFrontOnly();
 
 private:
     render::RadianceImage renderWith(bool culling, const render::Camera& camera, const glm::vec3& light);
+    static double largestDifference(const render::RadianceImage& a, const render::RadianceImage& b);
     test::GlTestContext m_gl;
     render::Scene m_scene;
 };
+
+double ViewCullingTest::largestDifference(const render::RadianceImage& a, const render::RadianceImage& b)
+{
+    double worst = 0.0;
+    for (std::size_t i = 0; i < b.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, double(std::abs(a.pixels[i][c] - b.pixels[i][c])) / (1.0 + b.pixels[i][c]));
+    return worst;
+}
 
 void ViewCullingTest::initTestCase()
 {
@@ -101,16 +113,58 @@ void ViewCullingTest::sameImage()
     QFETCH(glm::vec3, light);
     const render::RadianceImage culled = renderWith(true, camera, light);
     const render::RadianceImage full = renderWith(false, camera, light);
-    double worst = 0.0, sum = 0.0;
-    for (std::size_t i = 0; i < full.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            sum += full.pixels[i][c];
-            worst = std::max(worst, double(std::abs(culled.pixels[i][c] - full.pixels[i][c])) / (1.0 + full.pixels[i][c]));
-        }
+    double sum = 0.0;
+    for (const glm::vec3& p : full.pixels)
+        sum += double(p.r) + p.g + p.b;
+    const double worst = largestDifference(culled, full);
     qInfo("image mean %.4f, largest difference with culling %.2e", sum / double(3 * full.pixels.size()), worst);
     QVERIFY2(sum > 0.0, "the view shows nothing: the case tests nothing");
     // Voxel fragments are summed by float atomics in varying order: the last bits may differ.
     QVERIFY2(worst <= 1e-4, qPrintable(QString::number(worst)));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// Closed solids seen from outside look the same single-sided (Material::doubleSided off: back faces left out
+// of the g-buffer and of the shadow maps), whether or not the closed-surface test would have culled them.
+void ViewCullingTest::singleSidedSolidsLookTheSameFromOutside()
+{
+    const render::Camera camera{{2, 7, 16}, {8, 2, 6}, {0, 1, 0}, 60.0f, 0.05f};
+    const glm::vec3 light(8, 12, 8);
+    const render::RadianceImage both = renderWith(false, camera, light);
+    for (std::size_t m = 1; m < m_scene.materials.size(); ++m)
+        m_scene.materials[m].doubleSided = false;
+    const render::RadianceImage front = renderWith(true, camera, light);
+    for (std::size_t m = 1; m < m_scene.materials.size(); ++m)
+        m_scene.materials[m].doubleSided = true;
+    const double worst = largestDifference(front, both);
+    qInfo("single-sided solids against double-sided: largest difference %.2e", worst);
+    QVERIFY2(worst <= 1e-4, qPrintable(QString::number(worst)));
+}
+
+// A single-sided wall seen from behind is not there for the camera; double-sided, it is.
+void ViewCullingTest::singleSidedSurfacesShowTheirFrontOnly()
+{
+    render::Scene scene = m_scene;
+    render::Material wall;
+    wall.albedo = glm::vec3(0.1f, 0.9f, 0.2f);
+    scene.materials.push_back(wall);
+    // Facing -z, away from a camera on its +z side.
+    scene.meshes.push_back(test::makeTriangles(test::quad({10, 1, 14}, {4, 1, 14}, {4, 6, 14}, {10, 6, 14}), int(scene.materials.size()) - 1));
+    const render::Camera camera{{7, 3.5f, 15.5f}, {7, 3.5f, 0}, {0, 1, 0}, 40.0f, 0.05f};
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    settings.view = render::DebugView::Albedo;
+    for (const bool doubleSided : {true, false}) {
+        scene.materials.back().doubleSided = doubleSided;
+        m_gl.renderer->setSettings(settings);
+        m_gl.renderer->setScene(scene);
+        m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f), glm::vec3(15.5f)));
+        m_gl.renderer->renderFrame(camera, 32, 32);
+        const glm::vec3 centre = m_gl.renderer->readFrame().at(16, 16);
+        qInfo("%s wall seen from behind: albedo %.3f %.3f %.3f", doubleSided ? "double-sided" : "single-sided",
+            double(centre.r), double(centre.g), double(centre.b));
+        QCOMPARE(std::abs(centre.g - wall.albedo.g) < 0.01f, doubleSided);
+    }
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 

@@ -64,6 +64,7 @@ bool makeEditedCornell(Document& doc)
     material.albedo = {0.123f, 0.456f, 0.789f};
     material.specular = glm::vec3(0.1f);
     material.shininess = 64.0f;
+    material.doubleSided = false;
     doc.setMaterial(1, material);
     LightNode light;
     light.name = QStringLiteral("Sun");
@@ -126,6 +127,39 @@ private slots:
         QVERIFY(sameDocument(doc.state(), state));
         state.nodes[0].transform.scale.y = 2.0f;
         QVERIFY(!sameDocument(doc.state(), state));
+    }
+
+    // Projects saved before materials could be single-sided have no "double_sided": their materials load as
+    // double-sided, as they were drawn then; a wrong type is refused with the field named.
+    void doubleSidedDefaultsToBothSides()
+    {
+        Document doc;
+        QVERIFY(makeEditedCornell(doc));
+        QVERIFY(!doc.state().materials[1].doubleSided);
+        QJsonObject root = QJsonDocument::fromJson(ProjectFile::toJson(doc.state(), QDir::tempPath())).object();
+        QJsonArray materials = root.value("materials").toArray();
+        for (qsizetype i = 0; i < materials.size(); ++i) {
+            QJsonObject m = materials[i].toObject();
+            QVERIFY(m.contains("double_sided"));
+            m.remove("double_sided");
+            materials[i] = m;
+        }
+        root["materials"] = materials;
+        DocumentState state;
+        QString error;
+        QVERIFY2(ProjectFile::fromJson(QJsonDocument(root).toJson(), QDir::tempPath(), QStringLiteral("old.vctproj"),
+                     &state, &error),
+            qPrintable(error));
+        for (const vct::render::Material& m : state.materials)
+            QVERIFY(m.doubleSided);
+
+        QJsonObject wrong = materials[1].toObject();
+        wrong["double_sided"] = QStringLiteral("no");
+        materials[1] = wrong;
+        root["materials"] = materials;
+        QVERIFY(!ProjectFile::fromJson(QJsonDocument(root).toJson(), QDir::tempPath(), QStringLiteral("bad.vctproj"),
+            &state, &error));
+        QVERIFY2(error.contains(QStringLiteral("materials[1].double_sided")), qPrintable(error));
     }
 
     void modelPathsAreStoredRelative()
