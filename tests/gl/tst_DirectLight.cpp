@@ -26,7 +26,6 @@ private slots:
 
 private:
     render::RadianceImage renderDirect(const render::Scene& scene);
-    glm::ivec2 pixelOf(const glm::vec3& world) const;
     /** Where the ray through the centre of image pixel @p p meets the floor: the point that pixel shades. */
     glm::vec3 floorPointOf(glm::ivec2 p) const;
     test::GlTestContext m_gl;
@@ -52,14 +51,6 @@ render::RadianceImage DirectLightTest::renderDirect(const render::Scene& scene)
     m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f, -0.5f, 0.5f), glm::vec3(15.5f, 6.0f, 15.5f)));
     m_gl.renderer->renderFrame(m_camera, kSize, kSize);
     return m_gl.renderer->readFrame();
-}
-
-glm::ivec2 DirectLightTest::pixelOf(const glm::vec3& world) const
-{
-    const glm::mat4 view = glm::lookAt(m_camera.position, m_camera.lookAt, m_camera.up);
-    const glm::mat4 projection = glm::perspective(glm::radians(m_camera.fovYDeg), 1.0f, 0.05f, 100.0f);
-    const glm::vec3 p = glm::project(world, view, projection, glm::vec4(0, 0, kSize, kSize));
-    return {int(p.x), kSize - 1 - int(p.y)}; // RadianceImage rows run top to bottom
 }
 
 glm::vec3 DirectLightTest::floorPointOf(glm::ivec2 p) const
@@ -118,7 +109,7 @@ void DirectLightTest::matchesClosedForm()
              std::tuple{"below the light", glm::vec3(5.0f, 0.0f, 8.0f), true, true},
              std::tuple{"in the point light's shadow", pointShadow, false, true},
              std::tuple{"in the sun's shadow", sunShadow, true, false}}) {
-        const glm::ivec2 p = pixelOf(at);
+        const glm::ivec2 p = test::pixelOf(m_camera, at, kSize);
         QVERIFY(p.x >= 0 && p.y >= 0 && p.x < kSize && p.y < kSize);
         const float expected = (point && pointLit ? pointTerm(floorPointOf(p)) : 0.0f) + (sunLit ? fromSun : 0.0f);
         const float got = image.at(p.x, p.y).r;

@@ -1,7 +1,6 @@
 #include "GlTestContext.h"
 #include "TestSupport.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <QtTest>
 
@@ -19,7 +18,6 @@ private slots:
 
 private:
     render::RadianceImage renderSpecular(bool glossy, int divisor = 8, int size = kSize);
-    glm::ivec2 pixelOf(const glm::vec3& world) const;
     test::GlTestContext m_gl;
     const render::Camera m_camera{{8.0f, 4.0f, 14.0f}, {8.0f, 0.5f, 6.0f}, {0, 1, 0}, 70.0f, 0.01f};
     static constexpr int kSize = 48;
@@ -56,21 +54,13 @@ render::RadianceImage SpecularConeTest::renderSpecular(bool glossy, int divisor,
     return m_gl.renderer->readFrame();
 }
 
-glm::ivec2 SpecularConeTest::pixelOf(const glm::vec3& world) const
-{
-    const glm::mat4 view = glm::lookAt(m_camera.position, m_camera.lookAt, m_camera.up);
-    const glm::mat4 projection = glm::perspective(glm::radians(m_camera.fovYDeg), 1.0f, 0.01f, 100.0f);
-    const glm::vec3 p = glm::project(world, view, projection, glm::vec4(0, 0, kSize, kSize));
-    return {int(p.x), kSize - 1 - int(p.y)}; // RadianceImage rows run top to bottom
-}
-
 void SpecularConeTest::glossyFloorMirrorsEmitter()
 {
     const render::RadianceImage image = renderSpecular(true);
     // The mirror ray from (8, 0.5, 6) meets the wall at (8, 2.25, 2): it sees the light. From (13, 0.5, 7)
     // it meets the wall's plane at x = 16.6, well beside the light (x in [4, 12]), and sees nothing.
-    const glm::ivec2 hit = pixelOf({8.0f, 0.5f, 6.0f});
-    const glm::ivec2 miss = pixelOf({13.0f, 0.5f, 7.0f});
+    const glm::ivec2 hit = test::pixelOf(m_camera, {8.0f, 0.5f, 6.0f}, kSize);
+    const glm::ivec2 miss = test::pixelOf(m_camera, {13.0f, 0.5f, 7.0f}, kSize);
     for (const glm::ivec2& p : {hit, miss})
         QVERIFY(p.x >= 0 && p.y >= 0 && p.x < kSize && p.y < kSize);
     const float lit = image.at(hit.x, hit.y).r, dark = image.at(miss.x, miss.y).r;

@@ -3,6 +3,7 @@
 #include "GlTestContext.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <QDir>
 #include <QProcessEnvironment>
@@ -75,6 +76,15 @@ render::Aabb box(glm::vec3 lo, glm::vec3 hi)
     b.extend(lo);
     b.extend(hi);
     return b;
+}
+
+glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size)
+{
+    const glm::mat4 view = glm::lookAt(camera.position, camera.lookAt, camera.up);
+    // Near and far planes do not move a point across the screen: any pair projects the same.
+    const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg), 1.0f, 0.01f, 100.0f);
+    const glm::vec3 p = glm::project(world, view, projection, glm::vec4(0, 0, size, size));
+    return {int(p.x), size - 1 - int(p.y)};
 }
 
 } // namespace vct::test

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "scene/Aabb.h"
+#include "scene/Camera.h"
 #include "scene/Mesh.h"
 
 #include <QString>
@@ -22,5 +23,7 @@ render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
 /** The box spanning two corners. */
 render::Aabb box(glm::vec3 lo, glm::vec3 hi);
+/** The pixel of a size x size RadianceImage (rows top to bottom) that camera sees world in. */
+glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size);
 
 } // namespace vct::test
