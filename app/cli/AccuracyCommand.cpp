@@ -252,7 +252,7 @@ int AccuracyCommand::run(int argc, char** argv)
             "Render the reference with the path tracer at N spp instead, cached as DIR/reference.pfm."),
         QStringLiteral("N"));
     const QCommandLineOption cameraOption(QStringLiteral("camera"),
-        QStringLiteral("Camera JSON (shared/reference format); sets the image size."),
+        QStringLiteral("Camera JSON (the format of tests/data/reference); sets the image size."),
         QStringLiteral("cam.json"));
     const QCommandLineOption lightsOption(QStringLiteral("lights"),
         QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));

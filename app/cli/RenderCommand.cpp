@@ -135,7 +135,7 @@ int RenderCommand::run(int argc, char** argv)
         + settingsHelp());
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
-    const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (shared/reference format)."), QStringLiteral("cam.json"));
+    const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (the format of tests/data/reference)."), QStringLiteral("cam.json"));
     const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));
     const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
     const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Image height in pixels (default: camera file or 360)."), QStringLiteral("H"));

@@ -7,7 +7,7 @@
 namespace vct::doc {
 
 /**
- * The pinhole camera file of shared/reference (*.camera.json):
+ * The pinhole camera file of the reference scenes (tests/data/reference) (*.camera.json):
  * `{"position": [x,y,z], "look_at": [x,y,z], "up": [x,y,z], "fov_y_deg": 40, "width": 256, "height": 256}`.
  * Positions in metres, field of view vertical in degrees, size in pixels. `up` is optional (default +Y).
  */

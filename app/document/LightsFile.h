@@ -7,7 +7,7 @@
 namespace vct::doc {
 
 /**
- * The analytic lights file of shared/reference (*.lights.json):
+ * The analytic lights file of the reference scenes (tests/data/reference) (*.lights.json):
  * `{"lights": [{"type": "point", "position": [x,y,z], "intensity": [r,g,b]},
  *              {"type": "directional", "direction": [dx,dy,dz], "irradiance": [r,g,b]}], "shadows": true}`.
  * Point intensity is radiant intensity in W/sr, directional irradiance W/m^2 on a surface facing the light,

@@ -13,7 +13,7 @@ namespace vct::doc {
  * Turns a scene spec into a scene: `builtin:NAME` (see BuiltinScenes) or the path of a model file.
  *
  * Next to a model file `DIR/STEM.EXT`, the optional siblings `DIR/STEM.lights.json` (LightsFile) and
- * `DIR/STEM.camera.json` (CameraFile) are loaded too, as shared/reference lays its scenes out. Without a
+ * `DIR/STEM.camera.json` (CameraFile) are loaded too, as tests/data/reference lays its scenes out. Without a
  * camera file the camera frames the bounds (frameBounds()).
  */
 class SceneLoader {

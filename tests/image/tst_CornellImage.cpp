@@ -115,7 +115,7 @@ void CornellImageTest::floorNextToRedWallIsRedder()
 void CornellImageTest::referenceRelativeMse()
 {
     const QString model = test::referenceDir() + QStringLiteral("/cornell.obj");
-    QVERIFY2(QFile::exists(model), qPrintable("missing reference scene " + model + " (shared/ must sit beside the repository)"));
+    QVERIFY2(QFile::exists(model), qPrintable("missing reference scene " + model + " (tests/data/reference)"));
     doc::SceneLoadInfo info;
     render::Scene scene;
     QString error;

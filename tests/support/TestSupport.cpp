@@ -26,7 +26,7 @@ QString sourceDir()
 
 QString referenceDir()
 {
-    return env("VCT_SHARED_DIR", sourceDir() + QStringLiteral("/../shared")) + QStringLiteral("/reference");
+    return env("VCT_REFERENCE_DIR", sourceDir() + QStringLiteral("/tests/data/reference"));
 }
 
 QString outputDir()

@@ -12,7 +12,7 @@ namespace vct::test {
 
 /** The project's source tree (set by CTest), for test data. */
 QString sourceDir();
-/** shared/reference of the workspace; a test that needs it fails when it is missing. */
+/** tests/data/reference: the Cycles references of the Cornell boxes, kept in the repository. */
 QString referenceDir();
 /** Where tests write actual/diff images; created on demand. */
 QString outputDir();
