@@ -22,6 +22,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -225,16 +226,10 @@ void MainWindow::openInitial(const QString& specOrProject)
     if (QFileInfo::exists(recovery) && dialogsAllowed()) {
         const auto answer = QMessageBox::question(this, tr("Recover unsaved work?"),
             tr("VCT Studio did not close normally last time. Recover the autosaved document?"));
-        if (answer == QMessageBox::Yes) {
-            QString error;
-            if (m_document->openProject(recovery, &error)) {
-                QFile::remove(recovery);
-                statusBar()->showMessage(tr("Recovered the autosaved document; save it to keep it."));
-                return;
-            }
-            showError(tr("Recovery failed"), error);
-        }
-        QFile::remove(recovery);
+        if (answer == QMessageBox::Yes && recoverAutosave())
+            return;
+        if (answer != QMessageBox::Yes)
+            QFile::remove(recovery);
     }
     QString error;
     const bool ok = specOrProject.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)
@@ -244,6 +239,23 @@ void MainWindow::openInitial(const QString& specOrProject)
         showError(tr("Open"), error);
         m_document->newFromScene(QStringLiteral("builtin:default"), &error);
     }
+}
+
+bool MainWindow::recoverAutosave()
+{
+    QString error;
+    if (!m_document->recoverProject(recoveryPath(), &error)) {
+        // Kept aside, not deleted: what it holds may still be read by hand; the next start does not offer it again.
+        const QString kept = recoveryPath() + QStringLiteral(".failed-")
+            + QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"));
+        QFile::remove(kept);
+        const bool moved = QFile::rename(recoveryPath(), kept);
+        showError(tr("Recovery failed"),
+            moved ? tr("%1 (the autosaved copy is kept as %2)").arg(error, QDir::toNativeSeparators(kept)) : error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Recovered the autosaved document: it is untitled until you save it (Ctrl+S)."));
+    return true;
 }
 
 bool MainWindow::openProject(const QString& path)
@@ -413,7 +425,10 @@ void MainWindow::addRecentFile(const QString& path)
 void MainWindow::rebuildRecentMenu()
 {
     m_recentMenu->clear();
-    const QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    // A file deleted or moved since is no way back to the work: leave it out rather than fail on a click.
+    files.erase(std::remove_if(files.begin(), files.end(), [](const QString& path) { return !QFileInfo::exists(path); }),
+        files.end());
     for (const QString& path : files)
         m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
             if (maybeSave())

@@ -48,6 +48,14 @@ public:
     /** Where autosave writes (beside the settings, per user). */
     static QString recoveryPath();
 
+    /**
+     * Opens the autosaved document as recovered work (untitled, modified). The recovery file stays until the
+     * work is saved elsewhere or the user discards it on closing, so a second crash loses nothing either.
+     */
+    bool recoverAutosave();
+    /** Writes the recovery copy now if the document has unsaved changes (the timer calls this every minute). */
+    void autosave();
+
     bool openProject(const QString& path);
     bool saveProjectAs(const QString& path);
     bool importModel(const QString& path);
@@ -68,7 +76,6 @@ private:
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
     void updateTitle();
-    void autosave();
 
     doc::Document* m_document;
     ViewportWidget* m_viewport;

@@ -197,6 +197,17 @@ bool Document::openProject(const QString& path, QString* error)
     return true;
 }
 
+bool Document::recoverProject(const QString& path, QString* error)
+{
+    if (!openProject(path, error))
+        return false;
+    // Nothing on the undo stack, yet not what any file holds: no state of the stack is clean until a save.
+    m_undoStack.resetClean();
+    m_filePath.clear();
+    emit filePathChanged(m_filePath);
+    return true;
+}
+
 bool Document::saveProject(const QString& path, QString* error)
 {
     const QString absolutePath = QFileInfo(path).absoluteFilePath();

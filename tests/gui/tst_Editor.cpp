@@ -58,6 +58,7 @@ private slots:
     void inspectorScreenshot();
     void saveCloseOpenGivesTheSameDocument();
     void badFilesLeaveTheDocumentAlone();
+    void recoveredWorkIsUntitledAndSurvivesUntilSaved();
     void nonFiniteOverlayReportsEveryTarget();
 
 private:
@@ -316,6 +317,51 @@ void EditorTest::badFilesLeaveTheDocumentAlone()
     // A save that cannot happen (the parent "directory" is a file) fails and keeps the document as it was.
     QVERIFY(!m_window->saveProjectAs(corrupt + QStringLiteral("/inside.vctproj")));
     QCOMPARE(document->filePath(), filePath);
+}
+
+// A crash after an autosave, then recovery: the recovered document is untitled and modified (Save asks for a
+// path, closing asks), the recovery file outlives a second crash, and only a save elsewhere retires it.
+void EditorTest::recoveredWorkIsUntitledAndSurvivesUntilSaved()
+{
+    const QString recovery = ui::MainWindow::recoveryPath();
+    QFile::remove(recovery);
+    render::Material edited;
+    {
+        // The window goes away without closing, as it does when the process is killed: no closeEvent runs.
+        auto crashing = std::make_unique<ui::MainWindow>();
+        crashing->openInitial(QStringLiteral("builtin:cornell_point"));
+        edited = crashing->document()->state().materials[0];
+        edited.albedo = glm::vec3(0.1f, 0.7f, 0.2f);
+        crashing->document()->setMaterial(0, edited);
+        crashing->autosave();
+        QVERIFY2(QFileInfo::exists(recovery), "autosave wrote no recovery file");
+    }
+    for (int crash = 0; crash < 2; ++crash) {
+        ui::MainWindow recovered;
+        QVERIFY(recovered.recoverAutosave());
+        doc::Document* document = recovered.document();
+        QVERIFY2(document->filePath().isEmpty(), qPrintable("recovered document is titled " + document->filePath()));
+        QVERIFY2(document->isModified(), "a recovered document must count as unsaved");
+        QVERIFY(recovered.isWindowModified());
+        QVERIFY2(!recovered.windowTitle().contains(QStringLiteral("recovery")), qPrintable(recovered.windowTitle()));
+        QCOMPARE(document->state().materials[0].albedo, edited.albedo);
+        // Still there after recovering: a second crash before saving must not lose the work.
+        QVERIFY2(QFileInfo::exists(recovery), "recovery removed the only copy of the work before it was saved");
+    }
+    const QString saved = test::outputDir() + QStringLiteral("/recovered.vctproj");
+    QFile::remove(saved);
+    {
+        ui::MainWindow recovered;
+        QVERIFY(recovered.recoverAutosave());
+        QVERIFY(recovered.saveProjectAs(saved));
+        QVERIFY(!recovered.document()->isModified());
+        QCOMPARE(recovered.document()->filePath(), QFileInfo(saved).absoluteFilePath());
+        QVERIFY2(!QFileInfo::exists(recovery), "the recovery file outlived the save that made it obsolete");
+    }
+    ui::MainWindow reopened;
+    QVERIFY(reopened.openProject(saved));
+    QCOMPARE(reopened.document()->state().materials[0].albedo, edited.albedo);
+    QVERIFY(!reopened.document()->isModified());
 }
 
 QTEST_MAIN(EditorTest)
