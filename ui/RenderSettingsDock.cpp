@@ -128,10 +128,13 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_anisotropic->setObjectName(QStringLiteral("anisotropicCheck"));
     m_bounces = new QComboBox;
     m_bounces->setObjectName(QStringLiteral("bouncesCombo"));
-    m_bounces->addItem(tr("1 (direct light and emission)"), 1);
-    m_bounces->addItem(tr("2 (voxels gather a bounce)"), 2);
-    m_bounces->setToolTip(tr("Light bounces the voxels carry; 2 brightens closed rooms towards the truth, and "
-                             "costs a gather per surface voxel whenever lighting changes"));
+    m_bounces->addItem(tr("Converged (all)"), render::RenderSettings::kConvergedBounces);
+    m_bounces->addItem(tr("1 (one gathered)"), 1);
+    m_bounces->addItem(tr("2"), 2);
+    m_bounces->addItem(tr("4"), 4);
+    m_bounces->setToolTip(tr("Light bounces the voxels carry. Converged iterates until the light settles (the view "
+                             "keeps refining while idle; the stats panel shows the iterations), as a closed room "
+                             "needs; each iteration gathers once per occupied cell when the lighting changes"));
     m_indirectResolution = new QComboBox;
     m_indirectResolution->setObjectName(QStringLiteral("indirectResolutionCombo"));
     m_indirectResolution->addItem(tr("Full"), 1);
@@ -336,12 +339,13 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     s.diffuseConeCount = 5;
     s.diffuseApertureDeg = 30.0f;
     s.stepFactor = 1.0f;
+    s.bounceCellSize = 4;
     switch (preset) {
     case Preset::Fast:
         // A coarse grid with isotropic mips: the cheapest full frame that is still on the frontier.
         s.voxelResolution = 64;
         s.anisotropicMips = false;
-        s.bounces = 1;
+        s.bounces = 1; // box mips leak most of a gather: further bounces add little (docs/ACCURACY.md)
         s.indirectDivisor = 4;
         s.specularDivisor = 8;
         break;
@@ -349,16 +353,16 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
         // The defaults of RenderSettings.
         s.voxelResolution = 128;
         s.anisotropicMips = true;
-        s.bounces = 1;
+        s.bounces = render::RenderSettings::kConvergedBounces;
         s.indirectDivisor = 4;
         s.specularDivisor = 8;
         break;
     case Preset::High:
-        // Balanced plus a second bounce: the lowest error measured, at several seconds per full frame here;
-        // camera-only frames reuse the bounce.
+        // Balanced with cells of 2^3 voxels for the bounce gather and a finer specular grid.
         s.voxelResolution = 128;
         s.anisotropicMips = true;
-        s.bounces = 2;
+        s.bounces = render::RenderSettings::kConvergedBounces;
+        s.bounceCellSize = 2;
         s.indirectDivisor = 4;
         // Sharp reflections of nearby edges keep more of their edge at the finer specular grid.
         s.specularDivisor = 4;

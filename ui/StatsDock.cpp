@@ -62,12 +62,19 @@ StatsDock::StatsDock(QWidget* parent)
     m_memory = makeValueLabel(QStringLiteral("voxelMemoryLabel"));
     m_grid = makeValueLabel(QStringLiteral("voxelGridLabel"));
     m_frame = makeValueLabel(QStringLiteral("frameSizeLabel"));
+    m_bounces = makeValueLabel(QStringLiteral("bouncesLabel"));
+    // Its text changes every frame while the light converges: it must not widen the dock and move the view.
+    m_bounces->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_bounces->setToolTip(tr("The bounce iteration: iterations for the current light, and the relative change of "
+                             "the voxels' radiance in the last one. While idle the view keeps iterating until the "
+                             "change is under the tolerance (Render settings: Bounces)."));
     auto* form = new QFormLayout;
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("GPU total"), m_total);
     form->addRow(tr("Voxel memory"), m_memory);
     form->addRow(tr("Voxel grid"), m_grid);
     form->addRow(tr("Frame"), m_frame);
+    form->addRow(tr("Bounces"), m_bounces);
 
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -115,6 +122,13 @@ void StatsDock::showStats(const render::FrameStats& stats)
         m_grid->setText(QStringLiteral("—"));
     m_frame->setText(
         stats.width > 0 ? tr("%1 × %2 px").arg(stats.width).arg(stats.height) : QStringLiteral("—"));
+    if (stats.bounceIterations > 0)
+        m_bounces->setText(tr("%1, residual %2%3")
+                               .arg(stats.bounceIterations)
+                               .arg(stats.bounceResidual, 0, 'g', 2)
+                               .arg(stats.lightConverged ? QString() : tr(", converging…")));
+    else
+        m_bounces->setText(tr("one bounce"));
 }
 
 } // namespace vct::ui

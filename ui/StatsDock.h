@@ -32,6 +32,7 @@ private:
     QLabel* m_memory = nullptr;
     QLabel* m_grid = nullptr;
     QLabel* m_frame = nullptr;
+    QLabel* m_bounces = nullptr;
 };
 
 } // namespace vct::ui

@@ -69,6 +69,8 @@ void ViewportWidget::initializeGL()
         m_renderer = std::make_unique<render::Renderer>(qtProcAddress);
         // The stats panel shows the frame before: waiting for this frame's timer results would stall the UI.
         m_renderer->setTimesFromPreviousFrame(true);
+        // Bounces converge over frames: an edit shows at once, and the light settles while the view is idle.
+        m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
         m_sync->apply(*m_renderer, true);
         m_error.clear();
     } catch (const std::exception& e) {
@@ -127,6 +129,8 @@ void ViewportWidget::paintGL()
                 Qt::QueuedConnection);
         }
         emit frameRendered(stats);
+        if (!stats.lightConverged)
+            QTimer::singleShot(0, this, [this] { update(); });
     } catch (const std::exception& e) {
         m_error = QString::fromUtf8(e.what());
         emit rendererFailed(m_error);
@@ -139,9 +143,11 @@ render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, ren
         return {};
     makeCurrent();
     m_sync->apply(*m_renderer);
-    // A frame rendered on request (export, comparison) reports its own times.
+    // A frame rendered on request (export, comparison) reports its own times and has converged bounces.
     m_renderer->setTimesFromPreviousFrame(false);
+    m_renderer->setBounceIterationsPerFrame(0);
     const render::FrameStats frameStats = m_renderer->renderFrame(m_document->state().camera, width, height);
+    m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
     m_renderer->setTimesFromPreviousFrame(true);
     if (stats)
         *stats = frameStats;

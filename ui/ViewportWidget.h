@@ -99,6 +99,9 @@ private:
     std::unique_ptr<sync::SceneSync> m_sync;
     InspectorSettings m_inspector;
     static constexpr float kInteractiveScale = 0.35f; ///< share of the resolution while the view moves
+    /// Bounce iterations a frame of the view runs (Renderer::setBounceIterationsPerFrame); frames follow one
+    /// another until the light has converged.
+    static constexpr int kBounceIterationsPerFrame = 2;
     bool m_interactive = false;
     QTimer m_refineTimer;
     QTimer m_flyTimer;

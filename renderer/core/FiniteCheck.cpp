@@ -44,17 +44,18 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     if (voxels.radiance)
         for (int level = 0; level < voxels.radiance.levels(); ++level)
             counts.push_back({"radiance level " + std::to_string(level), count(voxels.radiance, level)});
-    if (voxels.irradiance)
-        counts.push_back({"voxel irradiance cache", count(voxels.irradiance, 0)});
-    if (voxels.irradianceBack)
-        counts.push_back({"voxel irradiance cache, back faces", count(voxels.irradianceBack, 0)});
-    if (voxels.irradianceNormal)
-        counts.push_back({"voxel irradiance cell normals", count(voxels.irradianceNormal, 0)});
+    const std::pair<const char*, const gl::Texture*> cells[] = {{"voxel irradiance cache", &voxels.irradiance},
+        {"voxel irradiance cache, back faces", &voxels.irradianceBack},
+        {"voxel irradiance cell normals", &voxels.irradianceNormal}, {"bounce cells", &voxels.bounceIrradiance},
+        {"bounce cells, back faces", &voxels.bounceIrradianceBack}, {"bounce cell normals", &voxels.bounceCellNormal}};
+    for (const auto& [name, texture] : cells)
+        if (*texture)
+            counts.push_back({name, count(*texture, 0)});
     if (voxels.bounced)
         for (int level = 0; level < voxels.bounced.levels(); ++level)
-            counts.push_back({"second-bounce radiance level " + std::to_string(level), count(voxels.bounced, level)});
+            counts.push_back({"bounced radiance level " + std::to_string(level), count(voxels.bounced, level)});
     for (const auto& [prefix, stack] : {std::pair{"directional radiance (six tiles) level ", &voxels.directional},
-             std::pair{"second-bounce directional radiance (six tiles) level ", &voxels.bouncedDirectional}})
+             std::pair{"bounced directional radiance (six tiles) level ", &voxels.bouncedDirectional}})
         if (*stack)
             for (int level = 0; level < stack->levels(); ++level) {
                 // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.

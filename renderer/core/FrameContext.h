@@ -55,6 +55,8 @@ struct FrameContext {
     glm::mat3 pixelToRay{1.0f};
     /// Set only while vct-bench perf counts the cone pass's 3D texture fetches (an untimed shader variant).
     ConeSampleCounter* coneSampleCounter = nullptr;
+    /// At most this many bounce iterations a frame (Renderer::setBounceIterationsPerFrame); 0 = all of them.
+    int bounceIterationsPerFrame = 0;
 };
 
 } // namespace vct::render

@@ -17,6 +17,13 @@ namespace vct::render {
 /** Tiles of VoxelVolume::directional: one per direction a cone can travel along an axis. */
 constexpr int kDirectionalTiles = 6;
 
+/** How far the bounce iteration (passes/VoxelBouncePass) has come for the current first-bounce radiance. */
+struct BounceProgress {
+    int iterations = 0;
+    double residual = 0.0; ///< relative change of the voxels' radiance in the last iteration
+    bool converged = true; ///< false while iterations are still to come (spread over frames)
+};
+
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
     VoxelGridFrame frame;
@@ -28,13 +35,24 @@ struct VoxelVolume {
     gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
     gl::Texture emission; ///< rgba16f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
+    /// r8, full mip chain: 1 where a voxel is occupied, box-filtered above. The area lights' visibility cones
+    /// trace it (common/AreaLights.glsl); built by light injection when there are area lights.
+    gl::Texture opacity;
+    std::uint64_t opacityVersion = 0; ///< the materialsVersion `opacity` was built for
     /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid
     /// level k+1), as six tiles of one gl::Texture::create3DStack in that order (kDirectionalTiles).
     gl::Texture directional;
-    /// With bounces = 2 (VoxelBouncePass): radiance after a second bounce gathered per voxel, full mip chain,
-    /// and its directional chains when anisotropic. Empty otherwise. Cones sample these when present.
+    /// With bounces != 1 (VoxelBouncePass): the radiance after the bounce iteration, L = L_direct + albedo *
+    /// (what the cells gathered from the previous iterate), full mip chain, and its directional chains when
+    /// anisotropic. Empty otherwise. Cones sample these when present.
     gl::Texture bounced;
     gl::Texture bouncedDirectional;
+    /// The bounce iteration's gather, one texel per cell of RenderSettings::bounceCellSize^3 voxels, laid out as
+    /// the irradiance cache's (rgba16f: sum_i w_i L_i along the cell normal, against it for two-sided cells, and
+    /// the cell normal with w = 0 none, 1 one-sided, 2 two-sided), but over every occupied cell.
+    gl::Texture bounceIrradiance;
+    gl::Texture bounceIrradianceBack;
+    gl::Texture bounceCellNormal;
     /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of RenderSettings::irradianceCellSize^3
     /// voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface along
     /// its normal (irradiance) and, for two-sided cells, against it (irradianceBack), a = ambient visibility,
@@ -53,6 +71,8 @@ struct VoxelVolume {
     Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
+    std::uint64_t bouncedVersion = 0;   ///< Grows each time the bounce iteration rewrites `bounced`.
+    BounceProgress bounceProgress;
     /// The radianceVersion levels 1..N of `radiance` were filtered for. With anisotropic mips cones read only
     /// level 0 and the directional chains, so the box levels are filtered only when something looks at them
     /// (the voxel inspector, readVoxels, the NaN check: Renderer::ensureBoxMips).

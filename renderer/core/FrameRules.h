@@ -20,6 +20,21 @@ struct FrameRules {
     {
         return frame.settings.emission && frame.scene.scene().hasEmissiveMaterial();
     }
+    /**
+     * Emitters light surfaces as area lights, per pixel and per voxel (core/AreaLightSet), when they fit its
+     * limits and direct light is on; their emission then stays out of the voxels' radiance, where cones would
+     * gather the same light a second time.
+     */
+    static bool areaLightsUsed(const FrameContext& frame)
+    {
+        return emissionNeeded(frame) && frame.settings.direct && frame.scene.areaLights().analytic();
+    }
+    static int areaLightCount(const FrameContext& frame)
+    {
+        return areaLightsUsed(frame) ? int(frame.scene.areaLights().lights.size()) : 0;
+    }
+    /** Emission goes into the voxels for the cones to gather: when it is not lit as area lights. */
+    static bool voxelEmissionNeeded(const FrameContext& frame) { return emissionNeeded(frame) && !areaLightsUsed(frame); }
     /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
     static bool ambientOcclusionNeeded(const FrameContext& frame)
     {

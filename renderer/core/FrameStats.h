@@ -25,6 +25,11 @@ struct FrameStats {
     /// The GPU times are those of the previous frame's passes (Pipeline::TimingReadback::PreviousFrame):
     /// reading this frame's would stall the CPU until the frame is done.
     bool timesFromPreviousFrame = false;
+    /// The bounce iteration (bounces != 1): iterations run for the current light, the relative change of the
+    /// last one, and whether more are to come in later frames (Renderer::setBounceIterationsPerFrame).
+    int bounceIterations = 0;
+    double bounceResidual = 0.0;
+    bool lightConverged = true;
 };
 
 } // namespace vct::render

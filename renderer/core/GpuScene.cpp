@@ -55,6 +55,9 @@ struct Vertex {
 GpuScene::GpuScene(const Scene& scene)
     : m_scene(scene)
 {
+    // Negative or non-finite emission would turn into negative or NaN pixels and voxels: it emits nothing.
+    for (Material& material : m_scene.materials)
+        material.emission = material.usableEmission();
     for (const Mesh& mesh : m_scene.meshes) {
         std::vector<Vertex> vertices(mesh.positions.size());
         const std::vector<glm::vec3> faceNormals = fallbackNormals(mesh);
@@ -97,6 +100,32 @@ GpuScene::GpuScene(const Scene& scene)
     const unsigned char white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(m_whiteTexture.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
     uploadMaterialTable();
+    rebuildAreaLights();
+}
+
+void GpuScene::rebuildAreaLights()
+{
+    m_areaLights = AreaLightSet::fromScene(m_scene);
+    ++m_areaLightsVersion;
+    // Three rgba32f texels per light (radiance + first triangle; sphere centre + radius; area + triangle
+    // count), then three per triangle (its corners), as shaders/common/AreaLights.glsl reads them.
+    std::vector<glm::vec4> entries;
+    for (const AreaLight& light : m_areaLights.lights) {
+        entries.emplace_back(light.radiance, float(light.firstTriangle));
+        entries.emplace_back(light.centre, light.radius);
+        entries.emplace_back(light.area, float(light.triangleCount), 0.0f, 0.0f);
+    }
+    for (const glm::vec3& corner : m_areaLights.triangles)
+        entries.emplace_back(corner, 1.0f);
+    if (entries.empty())
+        entries.emplace_back(0.0f); // a buffer texture needs storage
+    m_areaLightTable = gl::Buffer(entries.size() * sizeof(glm::vec4), entries.data());
+    m_areaLightTableView = gl::Texture::createBufferView(GL_RGBA32F, m_areaLightTable.id(), int(entries.size()));
+}
+
+void GpuScene::bindAreaLightTable(GLuint unit) const
+{
+    m_areaLightTableView.bindUnit(unit);
 }
 
 void GpuScene::uploadMaterialTable()
@@ -244,15 +273,22 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
 
 void GpuScene::setTransform(std::size_t mesh, const glm::mat4& transform)
 {
-    if (mesh < m_scene.meshes.size())
+    if (mesh < m_scene.meshes.size()) {
         m_scene.meshes[mesh].transform = transform;
+        if (materialOf(mesh).isEmissive())
+            rebuildAreaLights();
+    }
 }
 
 void GpuScene::setMaterial(std::size_t index, const Material& material)
 {
     if (index < m_scene.materials.size()) {
+        const bool emitters = m_scene.materials[index].emission != material.usableEmission();
         m_scene.materials[index] = material;
+        m_scene.materials[index].emission = material.usableEmission();
         uploadMaterialTable();
+        if (emitters)
+            rebuildAreaLights();
     }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/AreaLightSet.h"
 #include "core/ClosedSurface.h"
 #include "core/Frustum.h"
 #include "core/MeshClusters.h"
@@ -17,6 +18,9 @@ namespace vct::render {
 
 /** Texture unit of the material table in the passes that read the g-buffer (MATERIAL_TABLE_UNIT). */
 constexpr GLuint kMaterialTableUnit = 3;
+/** Texture units of the area-light table and the opacity volume its visibility cones trace (common/AreaLights.glsl). */
+constexpr GLuint kAreaLightTableUnit = 11;
+constexpr GLuint kOpacityUnit = 15;
 
 /** Which meshes a draw covers: the voxelizer draws static and dynamic meshes into separate layers. */
 enum class MeshFilter { All, Static, Dynamic };
@@ -61,6 +65,12 @@ public:
      * values the g-buffer does not store per pixel, found through the material index it does.
      */
     void bindMaterialTable(GLuint unit) const;
+    /** The emissive triangles as area lights (rebuilt when an emitter moves or an emission changes). */
+    const AreaLightSet& areaLights() const { return m_areaLights; }
+    /** Grows each time the area lights are rebuilt. */
+    std::uint64_t areaLightsVersion() const { return m_areaLightsVersion; }
+    /** Binds the area-light table (shaders/common/AreaLights.glsl) to texture unit `unit`. */
+    void bindAreaLightTable(GLuint unit) const;
     void setTransform(std::size_t mesh, const glm::mat4& transform);
     void setMaterial(std::size_t index, const Material& material);
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
@@ -89,6 +99,7 @@ private:
     /** Whether the mesh's material shows front faces only (Material::doubleSided off). */
     bool showsFrontOnly(std::size_t mesh) const;
     void uploadMaterialTable();
+    void rebuildAreaLights();
 
     Scene m_scene; // a copy: transforms and materials change through setters, meshes never
     std::vector<GpuMesh> m_meshes;
@@ -97,6 +108,10 @@ private:
     gl::Buffer m_materialTable; // one entry per material, then the fallback for meshes without a valid one
     gl::Texture m_materialTableView; // rgba32f buffer texture over m_materialTable
     std::size_t m_materialTableBytes = 0;
+    AreaLightSet m_areaLights;
+    std::uint64_t m_areaLightsVersion = 0;
+    gl::Buffer m_areaLightTable;
+    gl::Texture m_areaLightTableView; // rgba32f buffer texture over m_areaLightTable
 };
 
 } // namespace vct::render

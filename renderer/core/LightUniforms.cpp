@@ -1,5 +1,7 @@
 #include "core/LightUniforms.h"
 
+#include "core/FrameContext.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -36,6 +38,18 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
         shadows.pointDepth.bindUnit(8);
     if (shadows.directionalDepth)
         shadows.directionalDepth.bindUnit(9);
+}
+
+void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame)
+{
+    const VoxelVolume& v = frame.voxels;
+    program.set("uOpacityOrigin", v.frame.origin);
+    program.set("uOpacityExtent", v.frame.extent);
+    program.set("uOpacityVoxel", v.frame.voxelSize());
+    program.set("uOpacityMaxLevel", float(std::max(v.opacity.levels() - 1, 0)));
+    frame.scene.bindAreaLightTable(kAreaLightTableUnit);
+    if (v.opacity)
+        v.opacity.bindUnit(kOpacityUnit);
 }
 
 } // namespace vct::render

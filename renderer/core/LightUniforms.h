@@ -13,4 +13,11 @@ constexpr int kMaxDirectionalLights = 4;
 /** Sets the uniforms and binds the shadow maps that shaders/common/Lights.glsl reads. */
 void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows);
 
+struct FrameContext;
+/**
+ * Sets the uniforms and binds the table and the opacity volume that shaders/common/AreaLights.glsl reads
+ * (the opacity volume must have been built this frame: InjectLightPass).
+ */
+void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame);
+
 } // namespace vct::render

@@ -85,7 +85,26 @@ const std::map<std::string, Field>& fields()
         t["voxel_res"] = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
         t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
         t["anisotropic"] = makeField(&RenderSettings::anisotropicMips, "direction-dependent mips: six chains composited along each axis (on/off)");
-        t["bounces"] = makeField(&RenderSettings::bounces, "light bounces carried by the voxels: 1, or 2 to gather a second bounce per voxel");
+        Field bounces;
+        bounces.meaning = "light bounces carried by the voxels: converged (every bounce, until the change is under "
+                          "bounce_tolerance), or 1..64";
+        bounces.parse = [](RenderSettings& s, const std::string& v) {
+            if (v == "converged") {
+                s.bounces = RenderSettings::kConvergedBounces;
+                return true;
+            }
+            int n = 0;
+            if (!parseInt(v, n) || n < 1)
+                return false;
+            s.bounces = n;
+            return true;
+        };
+        bounces.print = [](const RenderSettings& s) {
+            return s.bounces == RenderSettings::kConvergedBounces ? std::string("converged") : std::to_string(s.bounces);
+        };
+        t["bounces"] = bounces;
+        t["bounce_cell"] = makeField(&RenderSettings::bounceCellSize, "cell side in voxels of the bounce iteration's gather: 2 or 4");
+        t["bounce_tolerance"] = makeField(&RenderSettings::bounceTolerance, "bounces=converged stops below this relative change (0.0001..0.5)");
         t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache, "diffuse cones gathered once per surface voxel, looked up per pixel (on/off)");
         t["irradiance_cell"] = makeField(&RenderSettings::irradianceCellSize, "irradiance cache cell side in voxels: 1, 2 or 4");
         t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
@@ -164,8 +183,12 @@ std::string RenderSettings::validate() const
         return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
     if (irradianceCellSize != 1 && irradianceCellSize != 2 && irradianceCellSize != 4)
         return "irradiance_cell must be 1, 2 or 4, not " + std::to_string(irradianceCellSize);
-    if (bounces != 1 && bounces != 2)
-        return "bounces must be 1 or 2, not " + std::to_string(bounces);
+    if (bounces != kConvergedBounces && (bounces < 1 || bounces > kMaxBounces))
+        return "bounces must be converged or 1.." + std::to_string(kMaxBounces) + ", not " + std::to_string(bounces);
+    if (bounceCellSize != 2 && bounceCellSize != 4)
+        return "bounce_cell must be 2 or 4, not " + std::to_string(bounceCellSize);
+    if (!(bounceTolerance >= 1e-4f && bounceTolerance <= 0.5f))
+        return "bounce_tolerance must be 0.0001..0.5";
     if (diffuseConeCount < 1 || diffuseConeCount > 32)
         return "diffuse_cones must be 1..32, not " + std::to_string(diffuseConeCount);
     if (!(diffuseApertureDeg > 0.0f && diffuseApertureDeg < 180.0f))
@@ -213,10 +236,14 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
     std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 4n x 3n x n
     bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
     bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
+    bytes += chain(n, 1, true);                                  // opacity r8, full chain (area-light shadows)
     if (anisotropicMips && n >= 2)
         bytes += 11 * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
-    if (bounces >= 2)                                            // the second-bounce volume and its chains
+    if (bounces != 1) { // the bounced volume and its chains; the bounce cells (front, back, normal, rgba16f)
         bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 11 * chain(n / 2, 8, true) : 0);
+        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(bounceCellSize), 1);
+        bytes += 3 * chain(cells, 8, false);
+    }
     if (irradianceCache) { // irradiance front and back, cell normals, rgba16f; which cells were gathered, r32ui
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1);
         bytes += 3 * chain(cells, 8, false) + chain(cells, 4, false);

@@ -21,10 +21,19 @@ struct RenderSettings {
     /// default: with 30-degree cones it is the largest accuracy gain measured (docs/ACCURACY.md, "Recommended
     /// defaults and presets": relative MSE 0.37 -> 0.22 in the Cornell box, 0.26 -> 0.12 in the atrium).
     bool anisotropicMips = true;
-    /// Light bounces the voxels carry: 1 = direct light and emission only (the cones add the one bounce seen
-    /// per pixel); 2 = each surface voxel also gathers a bounce through the diffuse cones (VoxelBouncePass), so
-    /// pixels see two. Closed rooms are otherwise too dark (docs/ACCURACY.md has the measured difference).
-    int bounces = 1;
+    /// Light bounces the voxels carry. 1 = direct light and emission only (the cones add the one bounce seen
+    /// per pixel). N >= 2: the voxels iterate N - 1 times L = L_direct + albedo * (light gathered from L)
+    /// (VoxelBouncePass), so pixels see N bounces. kConvergedBounces (`bounces=converged`, the default) iterates
+    /// until the estimated remaining change is under bounceTolerance: every bounce, as a closed room needs.
+    int bounces = kConvergedBounces;
+    static constexpr int kConvergedBounces = 0;
+    static constexpr int kMaxBounces = 64; ///< also the most iterations `converged` runs
+    /// Voxels per side of one cell of the bounce iteration's gather (2 or 4). Light that has bounced once
+    /// already varies slowly, so its cells can be coarser than the irradiance cache's.
+    int bounceCellSize = 4;
+    /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to
+    /// come estimated from how fast it shrinks, are both under this.
+    float bounceTolerance = 0.01f;
     /// Gather the diffuse cones once per surface voxel whenever the voxels' light changes (VoxelIrradiancePass),
     /// and give each pixel a normal-aware trilinear lookup of that instead of its own cones: a camera move then
     /// traces no diffuse cones at all. Pixels with no matching surface voxel nearby still trace their own.

@@ -47,6 +47,7 @@ struct Renderer::State {
     VoxelMipBuilder boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureBoxMips)
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
     std::uint64_t coneSamples = 0; ///< counted in the last frame
+    int bounceIterationsPerFrame = 0;
 };
 
 namespace {
@@ -305,6 +306,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     frame.view = matrices.view;
     frame.projection = matrices.projection;
     frame.pixelToRay = pixelToRay(camera, width, height);
+    frame.bounceIterationsPerFrame = st.bounceIterationsPerFrame;
 
     if (st.coneSampleCounter)
         st.coneSampleCounter->reset();
@@ -316,6 +318,9 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     stats.height = height;
     stats.voxelResolution = st.voxels.frame.resolution;
     stats.voxelSize = st.voxels.frame.voxelSize();
+    stats.bounceIterations = st.voxels.bounceProgress.iterations;
+    stats.bounceResidual = st.voxels.bounceProgress.residual;
+    stats.lightConverged = st.voxels.bounceProgress.converged;
     return stats;
 }
 
@@ -375,6 +380,11 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
 void Renderer::setTimesFromPreviousFrame(bool previousFrame)
 {
     m_state->pipeline->setTimingReadback(previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
+}
+
+void Renderer::setBounceIterationsPerFrame(int iterations)
+{
+    m_state->bounceIterationsPerFrame = std::max(0, iterations);
 }
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()

@@ -72,6 +72,12 @@ public:
      * one it issued (an interactive host); by default it waits for exact figures of the frame it rendered.
      */
     void setTimesFromPreviousFrame(bool previousFrame);
+    /**
+     * With bounces=converged: at most @p iterations bounce iterations per frame, each new solve starting from the
+     * last (an interactive host renders frames until FrameStats::lightConverged); 0 (the default) runs them all
+     * in the frame, from the first-bounce light, so a frame depends on its inputs alone.
+     */
+    void setBounceIterationsPerFrame(int iterations);
     /** Mip levels of the radiance volume (0 before the first frame). */
     int voxelLevelCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */

@@ -21,6 +21,8 @@ std::string formatName(GLenum format)
         return "r32f";
     case GL_R32UI:
         return "r32ui";
+    case GL_R8:
+        return "r8";
     case GL_RGBA32F:
         return "rgba32f";
     default: {
@@ -60,9 +62,11 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
     const std::pair<const char*, const gl::Texture*> named[] = { { "accumulators", &v.accumulators },
         { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
         { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
-        { "emission", &v.emission }, { "radiance", &v.radiance },
+        { "emission", &v.emission }, { "radiance", &v.radiance }, { "opacity", &v.opacity },
         { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
         { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
+        { "bounce cells", &v.bounceIrradiance }, { "bounce cells, back faces", &v.bounceIrradianceBack },
+        { "bounce cell normals", &v.bounceCellNormal },
         { "irradiance cache", &v.irradiance }, { "irradiance cache, back faces", &v.irradianceBack },
         { "irradiance cell normals", &v.irradianceNormal },
         { "irradiance cells gathered", &v.irradianceRequested } };

@@ -16,9 +16,11 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
     const Scene& scene = frame.scene.scene();
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    const int areas = FrameRules::areaLightCount(frame);
     std::vector<std::string> defines{"POINT_LIGHT_COUNT " + std::to_string(points),
-        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals), "VIEW " + std::to_string(int(settings.view))};
-    if (settings.direct && points + directionals > 0)
+        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals), "AREA_LIGHT_COUNT " + std::to_string(areas),
+        "VIEW " + std::to_string(int(settings.view))};
+    if (settings.direct && points + directionals + areas > 0)
         defines.emplace_back("DIRECT");
     // The indirect targets hold this frame's light only when the cone pass ran for them.
     if (settings.indirectDiffuse && FrameRules::diffuseConesNeeded(frame))
@@ -75,6 +77,8 @@ void CompositePass::execute(FrameContext& frame)
         program.set("uSpecularDivisor", s.specularDivisor);
         // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
         program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
+        program.set("uAreaShadowOffset", frame.settings.coneOffsetVoxels * frame.voxels.frame.voxelSize());
+        applyAreaLightUniforms(program, frame);
         glStencilFunc(GL_EQUAL, GLint(pixelClass), 0xFF);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }

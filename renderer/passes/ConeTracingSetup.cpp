@@ -37,4 +37,21 @@ void ConeTracingSetup::apply(gl::Program& program, const FrameContext& frame, bo
     }
 }
 
+void ConeTracingSetup::applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced,
+    int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals)
+{
+    const VoxelVolume& v = frame.voxels;
+    apply(program, frame, anisotropic, useBounced);
+    program.set("uResolution", v.frame.resolution);
+    program.set("uCellSize", cellSize);
+    program.set("uOne", 1);
+    program.set("uAoEnabled", ao ? 1 : 0);
+    program.set("uAoDistance", 0.1f * v.frame.extent);
+    v.albedo.bindUnit(0);
+    v.normal.bindUnit(1);
+    front.bindImage(0, 0, GL_WRITE_ONLY);
+    back.bindImage(1, 0, GL_WRITE_ONLY);
+    normals.bindImage(2, 0, GL_WRITE_ONLY);
+}
+
 } // namespace vct::render

@@ -9,9 +9,10 @@
 
 namespace vct::render {
 
-std::array<std::uint64_t, 4> InjectLightPass::keyOf(const FrameContext& frame) const
+std::array<std::uint64_t, 5> InjectLightPass::keyOf(const FrameContext& frame) const
 {
-    return {frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading, frame.shadows.version};
+    return {frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading, frame.shadows.version,
+        frame.scene.areaLightsVersion()};
 }
 
 namespace {
@@ -21,7 +22,8 @@ namespace {
  * light, i.e. its corners pushed away from the light by a grid diagonal. Conservative (a box around the
  * shadow frustum), and the whole grid when a point light sits inside the box.
  */
-VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const VoxelGridFrame& grid, int margin)
+VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const std::vector<AreaLight>& areaLights,
+    const VoxelGridFrame& grid, int margin)
 {
     if (box.isEmpty())
         return {};
@@ -43,6 +45,15 @@ VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const VoxelGridFram
         if (light.castsShadows)
             for (const glm::vec3& c : corners)
                 covered.extend(c + glm::normalize(light.direction) * reach);
+    // An area light's shadow spreads beyond its centre's by the light's size.
+    for (const AreaLight& light : areaLights) {
+        if (glm::length(box.center() - light.centre) <= light.radius + 0.5f * glm::length(box.size()))
+            return VoxelRegion::whole(grid.resolution);
+        for (const glm::vec3& c : corners) {
+            covered.extend(c + glm::normalize(c - light.centre) * reach + glm::vec3(light.radius));
+            covered.extend(c + glm::normalize(c - light.centre) * reach - glm::vec3(light.radius));
+        }
+    }
     return VoxelRegion::around(covered, grid, margin);
 }
 
@@ -54,14 +65,17 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const auto key = keyOf(frame);
     // Lights, shading settings and shadow-map size all bump lightValues or shading: those need everything.
-    const bool sameLights = m_key != decltype(m_key){} && key[1] == m_key[1] && key[2] == m_key[2];
+    // An emitter's edit changes the light everywhere its area light reaches, not only in its own voxels.
+    const bool sameLights = m_key != decltype(m_key){} && key[1] == m_key[1] && key[2] == m_key[2] && key[4] == m_key[4];
     if (!sameLights || !v.onlyDynamicChanged)
         return whole;
     if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed
         return v.changedRegion;
     const Scene& scene = frame.scene.scene();
-    return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, v.frame, 2))
-        .united(shadowReach(v.previousDynamicBounds, scene, v.frame, 2));
+    static const std::vector<AreaLight> none;
+    const std::vector<AreaLight>& areaLights = FrameRules::areaLightsUsed(frame) ? frame.scene.areaLights().lights : none;
+    return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, areaLights, v.frame, 2))
+        .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
 }
 
 PassDecision InjectLightPass::plan(const FrameContext& frame)
@@ -75,6 +89,10 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
         reason = "re-injecting only the " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
             + std::to_string(s.z) + " voxels that changed" + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
+    if (FrameRules::areaLightsUsed(frame))
+        reason += "; emitters lit as " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
+    else if (!frame.scene.areaLights().note.empty())
+        reason += "; " + frame.scene.areaLights().note;
     if (!FrameRules::emissionNeeded(frame))
         reason += "; no emission to inject";
     if (!FrameRules::hasLightSources(frame))
@@ -82,15 +100,38 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
     return {PassDecision::Action::Run, reason};
 }
 
+void InjectLightPass::buildOpacity(FrameContext& frame)
+{
+    VoxelVolume& v = frame.voxels;
+    if (v.opacityVersion == v.materialsVersion)
+        return;
+    if (!m_markOpacity)
+        m_markOpacity = frame.shaders.build({"mark opacity", {"inject/MarkOpacity.comp"}, {}});
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(v.opacity.id(), 0, GL_RED, GL_FLOAT, zero);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    m_markOpacity.use();
+    v.opacity.bindImage(0, 0, GL_WRITE_ONLY);
+    for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
+        voxels->dispatchOverCells();
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glGenerateTextureMipmap(v.opacity.id());
+    v.opacityVersion = v.materialsVersion;
+}
+
 void InjectLightPass::execute(FrameContext& frame)
 {
     const Scene& scene = frame.scene.scene();
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
-    gl::Program& program = m_programs[{points, directionals}];
+    const int areas = FrameRules::areaLightCount(frame);
+    gl::Program& program = m_programs[{points, directionals, areas}];
     if (!program)
         program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"},
-            {"POINT_LIGHT_COUNT " + std::to_string(points), "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals)}});
+            {"POINT_LIGHT_COUNT " + std::to_string(points), "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
+                "AREA_LIGHT_COUNT " + std::to_string(areas)}});
+    if (areas > 0)
+        buildOpacity(frame);
     const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;
@@ -118,7 +159,8 @@ void InjectLightPass::execute(FrameContext& frame)
     applyLightUniforms(program, scene, frame.shadows);
     program.set("uGridOrigin", v.frame.origin);
     program.set("uVoxelSize", v.frame.voxelSize());
-    program.set("uEmissionEnabled", FrameRules::emissionNeeded(frame) ? 1 : 0);
+    program.set("uEmissionEnabled", FrameRules::voxelEmissionNeeded(frame) ? 1 : 0);
+    applyAreaLightUniforms(program, frame);
     program.set("uDirectEnabled", frame.settings.direct ? 1 : 0);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);

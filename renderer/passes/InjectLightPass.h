@@ -7,6 +7,7 @@
 
 #include <array>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <cstdint>
 
@@ -29,12 +30,15 @@ public:
     void invalidate() override { m_key = {}; }
 
 private:
-    std::array<std::uint64_t, 4> keyOf(const FrameContext& frame) const;
+    std::array<std::uint64_t, 5> keyOf(const FrameContext& frame) const;
     /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
-    std::map<std::pair<int, int>, gl::Program> m_programs; ///< by point and directional light count
+    /** Level 0 of VoxelVolume::opacity from the occupied voxels, and its mips, when the voxels changed. */
+    void buildOpacity(FrameContext& frame);
+    std::map<std::tuple<int, int, int>, gl::Program> m_programs; ///< by point, directional and area light count
+    gl::Program m_markOpacity;
     OccupiedCellList m_occupied;
-    std::array<std::uint64_t, 4> m_key{};
+    std::array<std::uint64_t, 5> m_key{};
 };
 
 } // namespace vct::render

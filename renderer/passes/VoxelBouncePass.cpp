@@ -4,66 +4,187 @@
 #include "core/FrameRules.h"
 #include "passes/ConeTracingSetup.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 namespace vct::render {
 
-VoxelBouncePass::GatherKey VoxelBouncePass::keyOf(const FrameContext& frame)
+VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    return {s.anisotropicMips, s.diffuseConeCount, s.diffuseApertureDeg, s.stepFactor, s.maxDistance, s.coneOffsetVoxels,
-        frame.voxels.frame.resolution};
+    return { s.anisotropicMips, s.bounces, s.diffuseConeCount,
+        std::min(s.bounceCellSize, frame.voxels.frame.resolution), frame.voxels.frame.resolution,
+        s.diffuseApertureDeg, s.stepFactor, s.maxDistance, s.coneOffsetVoxels, s.bounceTolerance,
+        frame.voxels.materialsVersion };
+}
+
+int VoxelBouncePass::iterationLimit(const FrameContext& frame)
+{
+    const int bounces = frame.settings.bounces;
+    return bounces == RenderSettings::kConvergedBounces ? RenderSettings::kMaxBounces : bounces - 1;
 }
 
 PassDecision VoxelBouncePass::plan(const FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (frame.settings.bounces < 2 || !FrameRules::hasLightSources(frame)) {
+    if (frame.settings.bounces == 1 || !FrameRules::hasLightSources(frame)) {
         // Cones must go back to the first-bounce volume; the memory is not needed either.
-        v.bounced = gl::Texture();
-        v.bouncedDirectional = gl::Texture();
+        for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance,
+                 &v.bounceIrradianceBack, &v.bounceCellNormal })
+            *t = gl::Texture();
+        v.bounceProgress = {};
         m_radianceVersion = 0;
-        return {PassDecision::Action::Skip, frame.settings.bounces < 2 ? "one bounce: the per-pixel cones gather it" : "no light"};
+        return { PassDecision::Action::Skip,
+            frame.settings.bounces == 1 ? "one bounce: the per-pixel cones gather it" : "no light" };
     }
-    if (v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key)
-        return {PassDecision::Action::Reuse, "first-bounce radiance unchanged"};
-    return {PassDecision::Action::Run, "first-bounce radiance changed"};
+    const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
+    char text[160];
+    if (sameSolve && m_done) {
+        std::snprintf(text, sizeof text, "first-bounce radiance unchanged: %d iterations, residual %.2g",
+            m_iterations, m_residual);
+        return { PassDecision::Action::Reuse, text };
+    }
+    if (sameSolve) {
+        std::snprintf(
+            text, sizeof text, "converging: %d iterations so far, residual %.2g", m_iterations, m_residual);
+        return { PassDecision::Action::Run, text };
+    }
+    return { PassDecision::Action::Run,
+        v.bounced ? "first-bounce radiance or a bounce setting changed" : "no valid output yet" };
+}
+
+void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
+{
+    const int res = v.frame.resolution;
+    if (!v.bounced || v.bounced.width() != res)
+        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.radiance.levels());
+    if (!v.bounceIrradiance || v.bounceIrradiance.width() != cells)
+        for (gl::Texture* t : { &v.bounceIrradiance, &v.bounceIrradianceBack, &v.bounceCellNormal }) {
+            *t = gl::Texture::create3D(GL_RGBA16F, cells);
+            t->setFilter(GL_NEAREST, GL_NEAREST);
+        }
+    if (!m_residualSums)
+        m_residualSums = gl::Texture::create2D(GL_R32F, 2, 1);
+}
+
+void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compare)
+{
+    VoxelVolume& v = frame.voxels;
+    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
+    const int res = v.frame.resolution;
+    const int cellSize = std::min(frame.settings.bounceCellSize, res);
+    const int cells = res / cellSize;
+
+    // Gather: the irradiance cache's shader, over every occupied cell, from the current iterate.
+    gl::Program& gather = m_gather[anisotropic ? 1 : 0];
+    ConeTracingSetup::applyCellGather(gather, frame, anisotropic, fromBounced, cellSize, false,
+        v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal);
+    gather.use();
+    m_cells.dispatchOverCells();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    // Reinject: L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    glClearTexImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, zero);
+    if (!compare) // stale voxels of an earlier occupancy must not stay lit
+        glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    m_reinject.use();
+    m_reinject.set("uGridOrigin", v.frame.origin);
+    m_reinject.set("uVoxelSize", v.frame.voxelSize());
+    m_reinject.set("uCellVoxels", cellSize);
+    m_reinject.set("uCells", cells);
+    m_reinject.set("uCellSize", v.frame.extent / float(cells));
+    m_reinject.set("uCompare", compare ? 1 : 0);
+    v.albedo.bindUnit(0);
+    v.normal.bindUnit(1);
+    v.radiance.bindUnit(2);
+    v.bounceIrradiance.bindUnit(12);
+    v.bounceCellNormal.bindUnit(13);
+    v.bounceIrradianceBack.bindUnit(14);
+    v.bounced.bindImage(0, 0, GL_READ_WRITE);
+    m_residualSums.bindImage(1, 0, GL_READ_WRITE);
+    for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
+        voxels->dispatchOverCells();
+    glMemoryBarrier(
+        GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+
+    if (anisotropic)
+        m_builder.buildDirectional(frame.shaders, v.bounced, res, v.bouncedDirectional);
+    else
+        m_builder.buildBox(frame.shaders, v.bounced);
+}
+
+double VoxelBouncePass::readResidual()
+{
+    float sums[2] = { 0.0f, 0.0f };
+    glGetTextureImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, GLsizei(sizeof sums), sums);
+    return sums[1] > 0.0f ? double(sums[0]) / double(sums[1]) : 0.0;
 }
 
 void VoxelBouncePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
-    gl::Program& program = anisotropic ? m_anisotropicProgram : m_program;
-    if (!program)
-        program = frame.shaders.build({anisotropic ? "second bounce (anisotropic)" : "second bounce",
-            {"bounce/GatherBounce.comp"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
+    if (!m_reinject) {
+        m_gather[0] = frame.shaders.build({ "bounce cells", { "irradiance/GatherCells.comp" }, {} });
+        m_gather[1] = frame.shaders.build(
+            { "bounce cells (anisotropic)", { "irradiance/GatherCells.comp" }, { "ANISOTROPIC" } });
+        m_reinject = frame.shaders.build({ "bounce reinjection", { "bounce/ReinjectBounce.comp" }, {} });
+    }
     const int res = v.frame.resolution;
-    if (!v.bounced || v.bounced.width() != res)
-        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.radiance.levels());
-
-    // Empty voxels stay dark; the gather runs over the occupied ones only (a voxel both layers reach, twice).
-    const float dark[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, dark);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    const std::vector<const OccupiedCellList*> occupied = v.occupiedVoxels(frame.scene.hasDynamicMeshes());
-    // Gather from the first-bounce volume, not from last time's second bounce.
-    ConeTracingSetup::apply(program, frame, anisotropic, false);
-    program.set("uAoEnabled", 0);
-    v.albedo.bindUnit(0);
-    v.normal.bindUnit(1);
-    v.bounced.bindImage(0, 0, GL_WRITE_ONLY);
-    program.use();
-    for (const OccupiedCellList* voxels : occupied)
-        voxels->dispatchOverCells();
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-
-    m_builder.listCells(frame.shaders, res, v.bounced.levels(), occupied);
-    m_builder.buildBox(frame.shaders, v.bounced);
-    if (anisotropic)
-        m_builder.buildDirectional(frame.shaders, v.bounced, res, v.bouncedDirectional);
+    const int cellSize = std::min(frame.settings.bounceCellSize, res);
+    const int cells = res / cellSize;
+    const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
+    const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
+    const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
+    const bool voxelsChanged = !v.bounced || v.materialsVersion != m_listedMaterials
+        || v.bounced.width() != res || !v.bounceIrradiance || v.bounceIrradiance.width() != cells;
+    allocate(v, cells);
+    if (voxelsChanged) {
+        m_cells.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize);
+        m_builder.listCells(
+            frame.shaders, res, v.bounced.levels(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
+        m_listedMaterials = v.materialsVersion;
+    }
+    // An interactive view starts a new solve from the last one where the voxels are the same, so that a light
+    // edit brightens or dims the bounces smoothly instead of starting again from one bounce.
+    bool warm = sameSolve || (progressive && !voxelsChanged && m_iterations > 0);
+    if (!sameSolve) {
+        m_iterations = 0;
+        m_residual = m_previousResidual = 0.0;
+        m_done = false;
+    }
+    const int limit = iterationLimit(frame);
+    const int budget = progressive ? frame.bounceIterationsPerFrame : limit;
+    for (int step = 0; step < budget && !m_done; ++step) {
+        // The first iteration of a cold start gathers from the first-bounce volume; its reinjection then
+        // overwrites every occupied voxel, and the clear before it every other.
+        iterate(frame, warm, warm);
+        warm = true;
+        ++m_iterations;
+        if (converging) {
+            m_previousResidual = m_residual;
+            m_residual = readResidual();
+            // The change shrinks geometrically (by the scene's average albedo times what a gather captures):
+            // the change still to come is about residual * q / (1 - q).
+            const double q = m_iterations >= 3 && m_previousResidual > 0.0
+                ? std::min(m_residual / m_previousResidual, 0.99)
+                : 0.5;
+            const double tolerance = double(frame.settings.bounceTolerance);
+            m_done = m_iterations >= 2 && m_residual < tolerance && m_residual * q / (1.0 - q) < tolerance;
+        }
+        m_done = m_done || m_iterations >= limit;
+    }
+    if (frame.settings.anisotropicMips && v.directional)
+        m_builder.buildBox(
+            frame.shaders, v.bounced); // for the inspector and the NaN check; cones read the chains
     else
         v.bouncedDirectional = gl::Texture();
+    v.bounceProgress = { m_iterations, m_residual, m_done };
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);
+    ++v.bouncedVersion;
 }
 
 } // namespace vct::render

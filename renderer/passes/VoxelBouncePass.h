@@ -3,36 +3,69 @@
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 #include "passes/VoxelMipBuilder.h"
 
 #include <cstdint>
-#include <tuple>
 
 namespace vct::render {
 
+struct VoxelVolume;
+
 /**
- * With bounces = 2: every surface voxel gathers a second bounce through the diffuse cones from the
- * first-bounce mips, into a volume of its own (VoxelVolume::bounced) that is then filtered like the first;
- * per-pixel cones trace that volume. Runs only when the first-bounce radiance or a gather parameter
- * changed: a camera move reuses it, and with one bounce the pass is skipped and its volume released.
+ * Every bounce through the voxels (RenderSettings::bounces != 1). Each iteration gathers the diffuse cones
+ * once per occupied cell of bounceCellSize^3 voxels from the current iterate (the first-bounce volume to
+ * begin with), then sets every occupied voxel to L = L_direct + albedo * (what its cells gathered) in
+ * VoxelVolume::bounced and filters that into mips; per-pixel cones trace the result. With bounces = N it runs
+ * N - 1 iterations; with `converged` until the relative change and the change still to come (from how fast it
+ * shrinks) are both under bounceTolerance, at most kMaxBounces.
+ *
+ * A camera move reuses it. Renderer::setBounceIterationsPerFrame spreads the iterations over frames for an
+ * interactive view, starting each new solve from the last one (a light edit then changes the image smoothly);
+ * by default a frame runs every iteration from the first-bounce volume, so a frame is a function of its
+ * inputs.
  */
 class VoxelBouncePass final : public RenderPass {
 public:
-    const char* name() const override { return "second bounce"; }
-    PassDeclaration declare() const override { return {{Resource::VoxelMaterials, Resource::VoxelMips}, {Resource::VoxelMips}}; }
+    const char* name() const override { return "bounces"; }
+    PassDeclaration declare() const override
+    {
+        return { { Resource::VoxelMaterials, Resource::VoxelMips }, { Resource::VoxelMips } };
+    }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
 
 private:
-    /** Everything the gather's result depends on besides the radiance itself. */
-    using GatherKey = std::tuple<bool, int, float, float, float, float, int>;
-    static GatherKey keyOf(const FrameContext& frame);
-    gl::Program m_program;
-    gl::Program m_anisotropicProgram;
+    /** Everything the iteration depends on besides the first-bounce radiance itself. */
+    struct SolveKey {
+        bool anisotropic = false;
+        int bounces = 0, cones = 0, cellSize = 0, resolution = 0;
+        float aperture = 0.0f, step = 0.0f, maxDistance = 0.0f, coneOffset = 0.0f, tolerance = 0.0f;
+        std::uint64_t materials = 0;
+        bool operator==(const SolveKey& other) const = default;
+    };
+    static SolveKey keyOf(const FrameContext& frame);
+    /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
+    static int iterationLimit(const FrameContext& frame);
+    void allocate(VoxelVolume& v, int cells);
+    /** One iteration: gather the cells from @p fromBounced (else the first-bounce volume), reinject, filter.
+     */
+    void iterate(FrameContext& frame, bool fromBounced, bool compare);
+    /** The residual of the last iteration: sum of |change| over sum of radiance (reads back two floats). */
+    double readResidual();
+
+    gl::Program m_gather[2]; ///< irradiance/GatherCells.comp; [1] anisotropic
+    gl::Program m_reinject;
+    OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
-    std::uint64_t m_radianceVersion = 0;
-    GatherKey m_key{};
+    gl::Texture m_residualSums; ///< r32f, 2 x 1: sum of |change| and of radiance over the voxels
+    std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for
+    std::uint64_t m_listedMaterials = 0; ///< the voxels m_cells and the mip lists were made for
+    SolveKey m_key;
+    int m_iterations = 0;
+    double m_residual = 0.0, m_previousResidual = 0.0;
+    bool m_done = false;
 };
 
 } // namespace vct::render

@@ -38,7 +38,8 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
         return {PassDecision::Action::Skip,
             frame.settings.irradianceCache ? "no diffuse light needed" : "irradiance cache off: cones per pixel"};
     }
-    const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
+    const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion && v.bouncedVersion == m_bouncedVersion
+        && keyOf(frame) == m_key;
     if (!lightKept)
         return {PassDecision::Action::Run,
             std::string(v.irradiance ? "voxel light or a gather setting changed" : "no valid output yet")
@@ -138,27 +139,21 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
-    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key) || v.irradiance.width() != cells;
+    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion && v.bouncedVersion == m_bouncedVersion
+                           && keyOf(frame) == m_key)
+        || v.irradiance.width() != cells;
     if (fresh)
         forgetCells(v, cells);
     requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
-    ConeTracingSetup::apply(program, frame, anisotropic, true);
-    program.set("uResolution", res);
-    program.set("uCellSize", cellSize);
-    program.set("uOne", 1);
-    program.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
-    program.set("uAoDistance", 0.1f * v.frame.extent);
-    v.albedo.bindUnit(0);
-    v.normal.bindUnit(1);
-    v.irradiance.bindImage(0, 0, GL_WRITE_ONLY);
-    v.irradianceBack.bindImage(1, 0, GL_WRITE_ONLY);
-    v.irradianceNormal.bindImage(2, 0, GL_WRITE_ONLY);
+    ConeTracingSetup::applyCellGather(program, frame, anisotropic, true, cellSize, FrameRules::ambientOcclusionNeeded(frame),
+        v.irradiance, v.irradianceBack, v.irradianceNormal);
     program.use();
     m_requested.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     m_radianceVersion = v.radianceVersion;
+    m_bouncedVersion = v.bouncedVersion;
     m_key = keyOf(frame);
     m_view = viewOf(frame);
 }

@@ -71,6 +71,7 @@ private:
     OccupiedCellList m_newCells;  ///< listed by the request pass after a camera move
     OccupiedCellList m_requested; ///< the cells to gather
     std::uint64_t m_radianceVersion = 0;
+    std::uint64_t m_bouncedVersion = 0;
     GatherKey m_key{};
     ViewKey m_view;
 };

@@ -23,6 +23,14 @@ struct Material {
     /// faces out, which costs no pixels on closed models seen from outside and spares their rasterisation.
     bool doubleSided = true;
 
+    /** The emission a renderer may use: negative and non-finite channels emit nothing (docs/STABILITY.md). */
+    glm::vec3 usableEmission() const
+    {
+        glm::vec3 e = emission;
+        for (int c = 0; c < 3; ++c)
+            e[c] = e[c] > 0.0f && e[c] <= 3.0e38f ? e[c] : 0.0f; // false for NaN too
+        return e;
+    }
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool isGlossy() const
     {

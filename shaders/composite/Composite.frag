@@ -7,6 +7,7 @@
 // any branch; see common/PixelClass.glsl). Each variant is drawn with a stencil test for its pixel class;
 // pixels with no surface keep the cleared black.
 //   POINT_LIGHT_COUNT, DIRECTIONAL_LIGHT_COUNT  analytic lights (common/Lights.glsl)
+//   AREA_LIGHT_COUNT  emitters lit as area lights (common/AreaLights.glsl)
 //   DIRECT, INDIRECT_DIFFUSE, INDIRECT_SPECULAR  the terms present this frame
 //   GLOSSY    the material has a specular lobe (PIXEL_GLOSSY)
 //   EMISSION  the material emits (PIXEL_EMISSIVE) and emission is on
@@ -15,6 +16,7 @@
 //   VIEW      RenderSettings::view (0 = the final image)
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
+#include "common/AreaLights.glsl"
 #define MATERIAL_TABLE_UNIT 3
 #include "common/MaterialTable.glsl"
 #include "common/GBufferSurface.glsl"
@@ -29,6 +31,7 @@ layout(binding = 10) uniform sampler2D uSpecularGuide;   // ScreenTargets::specu
 
 uniform vec3 uCameraPosition;
 uniform float uShadowOffset; // metres along the normal for shadow lookups
+uniform float uAreaShadowOffset; // metres along the normal where area-light shadow cones start
 uniform int uDivisor;         // the diffuse grid's
 uniform int uSpecularDivisor; // the specular grid's
 
@@ -103,6 +106,14 @@ void main()
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
 #endif
         direct += brdf * irradiance;
+    }
+    // Area lights: the Lambertian lobe exactly, the glossy lobe approximated (common/AreaLights.glsl). The
+    // shadow cone starts where the cones of indirect light do, clear of the surface's own voxels.
+    if (kAreaLightCount > 0) {
+        direct += albedo / kPi * areaLightIrradiance(p, n, uAreaShadowOffset);
+#ifdef GLOSSY
+        direct += specular * areaLightSpecular(p, n, mirror, shininess, uAreaShadowOffset);
+#endif
     }
 #endif
     vec3 diffuseIndirect = vec3(0.0);

@@ -2,6 +2,7 @@
 // stored premultiplied by opacity so that box filtering and trilinear sampling stay correct. Runs over the
 // occupied voxels common/ListOccupied.comp found (it has already cleared the empty ones).
 #include "common/Lights.glsl"
+#include "common/AreaLights.glsl"
 
 #include "common/OccupiedCells.glsl"
 
@@ -57,6 +58,13 @@ void main()
             vec3 facing = facingLight(n, normalLength, toLight);
             float visibility = directionalLightVisibility(i, p + facing * uVoxelSize);
             radiance += albedo.rgb / kPi * uDirectionalLightIrradiance[i].rgb * visibility * max(dot(facing, toLight), 0.0);
+        }
+        if (kAreaLightCount > 0) {
+            // A voxel with no one normal faces the first light's way; the shadow cone starts a voxel out, as the
+            // shadow-map lookups do.
+            vec3 toLight = normalize(texelFetch(uAreaLights, 1).xyz - p);
+            vec3 facing = facingLight(n, normalLength, toLight);
+            radiance += albedo.rgb / kPi * areaLightIrradiance(p, facing, uVoxelSize);
         }
     }
     if (uEmissionEnabled)

@@ -30,6 +30,7 @@ private slots:
     void ambientOcclusionOnlyWhenShown();
     void noLightSourcesMeansNoIndirectLight();
     void secondBounceFollowsTheFirst();
+    void bouncesConvergeAcrossFrames();
     void irradianceCacheFollowsTheLight();
     void timesCanComeFromThePreviousFrame();
 
@@ -256,38 +257,85 @@ void RenderPlanTest::secondBounceFollowsTheFirst()
     render::RenderSettings settings;
     settings.voxelResolution = 32;
     settings.shadowMapSize = 256;
+    settings.bounces = 1;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(m_scene);
     planned();
-    expectAction("second bounce", "skipped");
+    expectAction("bounces", "skipped");
     const std::size_t oneBounceBytes = m_gl.renderer->voxelBytes();
 
-    settings.bounces = 2;
-    m_gl.renderer->setSettings(settings);
-    planned();
-    expectAction("second bounce", "run");
-    expectAction("inject light", "reused");
-    QVERIFY(m_gl.renderer->voxelBytes() > oneBounceBytes);
-    expectSameAsForced("second bounce on");
+    for (const int bounces : {2, render::RenderSettings::kConvergedBounces}) {
+        settings.bounces = bounces;
+        m_gl.renderer->setSettings(settings);
+        planned();
+        expectAction("bounces", "run");
+        expectAction("inject light", "reused");
+        QVERIFY(m_gl.renderer->voxelBytes() > oneBounceBytes);
+        QVERIFY(m_last.lightConverged);
+        QCOMPARE(m_last.bounceIterations > 1, bounces == render::RenderSettings::kConvergedBounces);
+        expectSameAsForced("bounces on");
 
-    m_camera.position += glm::vec3(0.05f, 0.0f, 0.0f);
-    planned();
-    expectAction("second bounce", "reused");
-    expectSameAsForced("camera move with two bounces");
+        m_camera.position += glm::vec3(0.05f, 0.0f, 0.0f);
+        planned();
+        expectAction("bounces", "reused");
+        expectSameAsForced("camera move with bounces");
 
-    m_scene.pointLights[0].position += glm::vec3(0.0f, -0.05f, 0.0f);
-    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
-    planned();
-    expectAction("inject light", "run");
-    expectAction("second bounce", "run");
-    expectSameAsForced("moved light with two bounces");
+        m_scene.pointLights[0].position += glm::vec3(0.0f, -0.05f, 0.0f);
+        m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+        planned();
+        expectAction("inject light", "run");
+        expectAction("bounces", "run");
+        expectSameAsForced("moved light with bounces");
+    }
 
     settings.bounces = 1;
     m_gl.renderer->setSettings(settings);
     planned();
-    expectAction("second bounce", "skipped");
+    expectAction("bounces", "skipped");
     QCOMPARE(m_gl.renderer->voxelBytes(), oneBounceBytes);
-    expectSameAsForced("second bounce off");
+    expectSameAsForced("bounces off");
+}
+
+// An interactive view spreads the iteration over frames: each frame runs one iteration and says it has not
+// converged, until it has; then the pass is reused. A light edit starts from the last solution, so the first
+// frame after it is already close to the converged image, and the end result matches a frame that ran every
+// iteration from scratch within the convergence tolerance.
+void RenderPlanTest::bouncesConvergeAcrossFrames()
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    settings.shadowMapSize = 256;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(m_scene);
+    m_gl.renderer->setBounceIterationsPerFrame(1);
+    int frames = 0;
+    for (planned(); !m_last.lightConverged && frames < 100; planned()) {
+        expectAction("bounces", "run");
+        QCOMPARE(m_last.bounceIterations, frames + 1);
+        ++frames;
+    }
+    QVERIFY2(m_last.lightConverged && frames >= 2, qPrintable(QString("%1 frames").arg(frames)));
+    planned();
+    expectAction("bounces", "reused");
+
+    m_scene.pointLights[0].intensity *= 1.2f;
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    planned();
+    expectAction("bounces", "run");
+    const render::RadianceImage firstAfterEdit = m_plannedImage;
+    while (!m_last.lightConverged)
+        planned();
+    const render::RadianceImage converged = m_plannedImage;
+    m_gl.renderer->setBounceIterationsPerFrame(0);
+    m_gl.renderer->invalidate();
+    m_gl.renderer->renderFrame(m_camera, 40, 40);
+    const render::RadianceImage fromScratch = m_gl.renderer->readFrame();
+    const double againstScratch = io::ImageMetrics::relativeMse(converged, fromScratch);
+    const double firstFrame = io::ImageMetrics::relativeMse(firstAfterEdit, fromScratch);
+    qInfo("converged over %d frames; after a 20%% light edit: first frame %.2e, converged %.2e relative MSE from "
+          "a frame that iterated from scratch", frames, firstFrame, againstScratch);
+    QVERIFY2(againstScratch < 1e-3, qPrintable(QString::number(againstScratch)));
+    QVERIFY2(firstFrame < 0.02, qPrintable(QString::number(firstFrame)));
 }
 
 // The irradiance cache gathers each cell in view once per voxel light: a camera move gathers only what came

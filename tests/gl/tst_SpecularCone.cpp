@@ -6,6 +6,27 @@
 
 using namespace vct;
 
+namespace {
+
+/** A black floor, glossy or matte, and a wall of light at z = 2 facing the camera (+z). */
+render::Scene floorAndLight(bool glossy)
+{
+    render::Scene scene;
+    render::Material floor;
+    floor.albedo = glm::vec3(0.0f);
+    floor.specular = glm::vec3(glossy ? 0.5f : 0.0f);
+    floor.shininess = glossy ? 200.0f : 0.0f;
+    render::Material emitter;
+    emitter.albedo = glm::vec3(0.0f);
+    emitter.emission = glm::vec3(5.0f);
+    scene.materials = {floor, emitter};
+    scene.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1}), 0));
+    scene.meshes.push_back(test::makeTriangles(test::quad({4, 1, 2}, {12, 1, 2}, {12, 8, 2}, {4, 8, 2}), 1));
+    return scene;
+}
+
+} // namespace
+
 /** The specular cone: glossy surfaces reflect what lies along the mirror direction, others get none. */
 class SpecularConeTest : public QObject {
     Q_OBJECT
@@ -15,6 +36,7 @@ private slots:
     void glossyFloorMirrorsEmitter();
     void matteFloorHasNoSpecularTerm();
     void reducedResolutionStaysCloseToFull();
+    void glossyFloorReflectsAreaLight();
 
 private:
     render::RadianceImage renderSpecular(bool glossy, int divisor = 8, int size = kSize);
@@ -31,22 +53,14 @@ void SpecularConeTest::initTestCase()
 
 render::RadianceImage SpecularConeTest::renderSpecular(bool glossy, int divisor, int size)
 {
-    render::Scene scene;
-    render::Material floor;
-    floor.albedo = glm::vec3(0.0f);
-    floor.specular = glm::vec3(glossy ? 0.5f : 0.0f);
-    floor.shininess = glossy ? 200.0f : 0.0f;
-    render::Material emitter;
-    emitter.albedo = glm::vec3(0.0f);
-    emitter.emission = glm::vec3(5.0f);
-    scene.materials = {floor, emitter};
-    scene.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1}), 0));
-    // A wall of light at z = 2 facing the camera (+z).
-    scene.meshes.push_back(test::makeTriangles(test::quad({4, 1, 2}, {12, 1, 2}, {12, 8, 2}, {4, 8, 2}), 1));
+    const render::Scene scene = floorAndLight(glossy);
     render::RenderSettings settings;
     settings.voxelResolution = 32;
     settings.view = render::DebugView::IndirectSpecular;
     settings.specularDivisor = divisor;
+    // With direct light on, the emitter would light the floor as an area light, and its reflection would be
+    // part of the direct term (glossyFloorReflectsAreaLight); off, its light is in the voxels for the cone.
+    settings.direct = false;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
     m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f), glm::vec3(15.5f)));
@@ -111,6 +125,40 @@ void SpecularConeTest::reducedResolutionStaysCloseToFull()
         QVERIFY2(std::abs(meanRatio - 1.0) < 0.08, qPrintable(QString::number(meanRatio)));
         QVERIFY2(meanError < 0.2, qPrintable(QString::number(meanError)));
         QVERIFY2(farShare < 0.02, qPrintable(QString::number(farShare)));
+    }
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// With direct light on, the emitter is an area light: its reflection on the glossy floor comes with the direct
+// term, and where the mirror ray meets the light it is close to Ks * Ke * cos(theta) (the lobe lies inside the
+// light), while beside the light it is dark. The specular cone no longer sees the emitter, so it is not
+// counted twice.
+void SpecularConeTest::glossyFloorReflectsAreaLight()
+{
+    const render::Scene scene = floorAndLight(true);
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f), glm::vec3(15.5f)));
+    const glm::ivec2 hit = test::pixelOf(m_camera, {8.0f, 0.5f, 6.0f}, kSize);
+    const glm::ivec2 miss = test::pixelOf(m_camera, {13.0f, 0.5f, 7.0f}, kSize);
+    for (const render::DebugView view : {render::DebugView::Direct, render::DebugView::IndirectSpecular}) {
+        settings.view = view;
+        m_gl.renderer->setSettings(settings);
+        m_gl.renderer->renderFrame(m_camera, kSize, kSize);
+        const render::RadianceImage image = m_gl.renderer->readFrame();
+        const float lit = image.at(hit.x, hit.y).r, dark = image.at(miss.x, miss.y).r;
+        qInfo("%s where the mirror sees the light %.3f, where it does not %.3f",
+            view == render::DebugView::Direct ? "direct" : "specular cone", lit, dark);
+        if (view == render::DebugView::Direct) {
+            // The mirror direction from (8, 0.5, 6) to (8, 2.25, 2): cos(theta) = 1.75 / |(0, 1.75, -4)|.
+            const float expected = 0.5f * 5.0f * 1.75f / std::sqrt(1.75f * 1.75f + 16.0f);
+            QVERIFY2(std::abs(lit - expected) <= 0.1f * expected, qPrintable(QString("%1, expected %2").arg(lit).arg(expected)));
+            QVERIFY2(dark < 0.1f * lit, qPrintable(QString::number(dark)));
+        } else {
+            QVERIFY2(lit < 0.05f, qPrintable(QString::number(lit))); // not seen a second time
+        }
     }
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }

@@ -311,17 +311,18 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetHigh"), Qt::LeftButton);
     const render::RenderSettings& s = document->state().settings;
-    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with a second bounce.
+    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with finer cells for the bounce gather.
     QCOMPARE(s.voxelResolution, 128);
     QCOMPARE(s.diffuseConeCount, 5);
     QCOMPARE(s.diffuseApertureDeg, 30.0f);
     QVERIFY(s.anisotropicMips);
-    QCOMPARE(s.bounces, 2);
+    QCOMPARE(s.bounces, render::RenderSettings::kConvergedBounces);
+    QCOMPARE(s.bounceCellSize, 2);
     QCOMPARE(s.indirectDivisor, 4);
     QCOMPARE(document->undoStack()->count(), 1);
     QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());
     QVERIFY(!child<QPushButton>(&dock, "presetBalanced")->isChecked());
-    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), 2);
+    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), render::RenderSettings::kConvergedBounces);
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetFast"), Qt::LeftButton);
     QCOMPARE(document->state().settings.voxelResolution, 64);
@@ -335,7 +336,8 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     QCOMPARE(document->state().settings.bounces, before.bounces);
     QCOMPARE(document->state().settings.anisotropicMips, before.anisotropicMips);
     QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), before.bounces);
-    QVERIFY(child<QPushButton>(&dock, "presetBalanced")->isChecked() == (before.bounces == 1 && before.anisotropicMips));
+    QVERIFY(child<QPushButton>(&dock, "presetBalanced")->isChecked()
+        == (before.bounces == render::RenderSettings::kConvergedBounces && before.anisotropicMips));
 
     // The indirect-resolution combo edits the setting like any other field.
     auto* indirect = child<QComboBox>(&dock, "indirectResolutionCombo");

@@ -3,6 +3,8 @@
 
 #include "imageio/ImageMetrics.h"
 
+#include "core/AreaLightSet.h"
+
 #include <glm/gtc/constants.hpp>
 
 #include <QtTest>
@@ -18,6 +20,8 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 /// The dark room may show at most this share of the lit room's radiance (docs/STABILITY.md).
 constexpr double kThinWallLeakBound = 0.03;
 constexpr double kThinWallLeakBoundCached = 0.06;
+/// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md).
+constexpr double kThinWallLeakBoundConverged = 0.16;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by `offset`. */
 render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
@@ -48,6 +52,17 @@ render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
     return scene;
 }
 
+/** The room's walls alone, every one of albedo rho emitting E: a closed white furnace. */
+render::Scene furnace(float rho, float emission)
+{
+    render::Scene scene = room();
+    scene.meshes.resize(1);
+    scene.pointLights.clear();
+    scene.materials[0].albedo = glm::vec3(rho);
+    scene.materials[0].emission = glm::vec3(emission);
+    return scene;
+}
+
 } // namespace
 
 /**
@@ -73,6 +88,8 @@ private slots:
     void voxelMemoryEstimateMatchesTheRenderer();
     void whiteFurnace();
     void whiteFurnaceSecondBounce();
+    void whiteFurnaceConverged_data();
+    void whiteFurnaceConverged();
     void smallChangesGiveSmallDifferences();
     void finerGridsConverge();
     void thinWallLeak();
@@ -182,6 +199,11 @@ void HardCasesTest::extremeLightsAndMaterials_data()
     QTest::newRow("albedo 0") << 5;
     QTest::newRow("albedo 1") << 6;
     QTest::newRow("flat scene 1000:1") << 7;
+    QTest::newRow("degenerate emitters") << 8;
+    QTest::newRow("negative emission") << 9;
+    QTest::newRow("non-finite emission") << 10;
+    QTest::newRow("10,000 emissive triangles") << 11;
+    QTest::newRow("emitter wider than the room") << 12;
 }
 
 void HardCasesTest::extremeLightsAndMaterials()
@@ -219,11 +241,54 @@ void HardCasesTest::extremeLightsAndMaterials()
         scene.camera.lookAt = glm::vec3(0.0f, -0.2f, 0.0f);
         bound = 1e4f;
         break;
+    case 8: { // zero-area and needle triangles with emission, beside one good one
+        render::Material lamp;
+        lamp.emission = glm::vec3(5.0f);
+        scene.materials.push_back(lamp);
+        const int m = int(scene.materials.size()) - 1;
+        scene.meshes.push_back(test::makeTriangles({{0, 0.9f, 0}, {0, 0.9f, 0}, {0, 0.9f, 0}, {-0.2f, 0.9f, 0}, {0.2f, 0.9f, 0},
+            {0.0f, 0.9f, 0}, {-0.1f, 0.95f, -0.1f}, {-0.1f, 0.95f, 0.1f}, {0.1f, 0.95f, 0.1f}}, m));
+        bound = 10.0f;
+        break;
+    }
+    case 9: scene.materials[1].emission = glm::vec3(-5.0f, 1.0f, -1.0f); break;
+    case 10: scene.materials[1].emission = glm::vec3(kNaN, kInf, 1.0f); break;
+    case 11: { // a ceiling of 100 x 100 small emissive quads: more than the area lights take, lit through the voxels
+        render::Material lamp;
+        lamp.emission = glm::vec3(0.5f);
+        scene.materials.push_back(lamp);
+        std::vector<glm::vec3> tiles;
+        for (int i = 0; i < 100; ++i)
+            for (int j = 0; j < 50; ++j) {
+                const float x = -0.9f + 0.018f * float(i), z = -0.9f + 0.036f * float(j), y = 0.98f;
+                for (const glm::vec3& v : test::quad({x, y, z + 0.01f}, {x + 0.01f, y, z + 0.01f}, {x + 0.01f, y, z}, {x, y, z}))
+                    tiles.push_back(v);
+            }
+        scene.meshes.push_back(test::makeTriangles(tiles, int(scene.materials.size()) - 1));
+        break;
+    }
+    case 12: { // one emitter far larger than the room it lights, facing down into it
+        render::Material lamp;
+        lamp.emission = glm::vec3(1.0f);
+        scene.materials.push_back(lamp);
+        scene.meshes.push_back(test::makeTriangles(test::quad({-50, 0.95f, 50}, {50, 0.95f, 50}, {50, 0.95f, -50}, {-50, 0.95f, -50}),
+            int(scene.materials.size()) - 1));
+        break;
+    }
     }
     render::RenderSettings settings;
     settings.voxelResolution = 32;
     const render::RadianceImage image = render(scene, settings);
     expectSane(image, bound);
+    if (kind >= 8) {
+        const render::AreaLightSet lights = render::AreaLightSet::fromScene(scene);
+        qInfo("%zu emissive triangles, %zu dropped, %zu area lights%s%s", lights.emissiveTriangles, lights.droppedTriangles,
+            lights.lights.size(), lights.note.empty() ? "" : ": ", lights.note.c_str());
+        if (kind == 8)
+            QVERIFY(lights.droppedTriangles == 2 && lights.lights.size() == 1);
+        if (kind == 11)
+            QVERIFY(!lights.analytic() && !lights.note.empty());
+    }
     if (kind == 2)
         QCOMPARE(io::ImageMetrics::meanLuminance(image), 0.0);
 }
@@ -291,8 +356,9 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
     settings.voxelResolution = 32;
     settings.anisotropicMips = false; // the figures below are for one box-filtered chain, without the cache
     settings.irradianceCache = false;
+    settings.bounces = 1; // nor the bounce volume
     const std::string problem = settings.set("voxel_res", "512");
-    QVERIFY2(problem.find("voxel_res=512 needs 12.1 GiB") != std::string::npos, problem.c_str());
+    QVERIFY2(problem.find("voxel_res=512 needs 12.3 GiB") != std::string::npos, problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
     QCOMPARE(settings.voxelResolution, 32);
     // With the budget raised, the same grid is accepted: the limit is memory, not the code.
@@ -303,7 +369,7 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 
 void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
 {
-    for (const int bounces : {1, 2})
+    for (const int bounces : {1, 2, render::RenderSettings::kConvergedBounces})
         for (const bool anisotropic : {false, true})
             for (const int resolution : {8, 32}) {
                 render::RenderSettings settings;
@@ -320,11 +386,7 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
 void HardCasesTest::whiteFurnace()
 {
     const float rho = 0.5f, emission = 1.0f;
-    render::Scene scene = room();
-    scene.meshes.resize(1); // the walls alone
-    scene.pointLights.clear();
-    scene.materials[0].albedo = glm::vec3(rho);
-    scene.materials[0].emission = glm::vec3(emission);
+    render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
     // 5% with 60-degree cones: voxels on the box's edges and corners average wall with empty space, so cones
     // leaving through them see slightly less than a full wall. 10% with the default 30-degree cones: a narrow
@@ -341,6 +403,8 @@ void HardCasesTest::whiteFurnace()
              Case {true, 30.0f, true, 0.10f}}) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
+        settings.bounces = 1; // pixels see E + rho E: the capture of one gather, alone
+        settings.direct = false; // so the walls' emission is in the voxels, not lit as an area light
         settings.indirectDivisor = 1;
         settings.anisotropicMips = c.anisotropic;
         settings.diffuseApertureDeg = c.apertureDeg;
@@ -371,16 +435,14 @@ void HardCasesTest::whiteFurnace()
 void HardCasesTest::whiteFurnaceSecondBounce()
 {
     const float rho = 0.5f, emission = 1.0f;
-    render::Scene scene = room();
-    scene.meshes.resize(1);
-    scene.pointLights.clear();
-    scene.materials[0].albedo = glm::vec3(rho);
-    scene.materials[0].emission = glm::vec3(emission);
+    render::Scene scene = furnace(rho, emission);
     render::RenderSettings settings;
     settings.voxelResolution = 64;
     settings.indirectDivisor = 1;
     settings.anisotropicMips = true;
     settings.diffuseApertureDeg = 60.0f; // the capture c above was measured with these cones
+    settings.bounces = 1;
+    settings.direct = false; // emission in the voxels: pixels gather every bounce through the cones
     const float oneBounce = io::ImageMetrics::meanRadiance(render(scene, settings, 48)).r;
     const float capture = (oneBounce - emission) / (rho * emission);
     settings.bounces = 2;
@@ -393,6 +455,57 @@ void HardCasesTest::whiteFurnaceSecondBounce()
         double(model), double(capture), double(physical));
     QVERIFY2(std::abs(mean - model) <= 0.01f * model, qPrintable(QString::number(double(mean))));
     QVERIFY2(std::abs(mean - physical) <= 0.07f * physical, qPrintable(QString::number(double(mean))));
+}
+
+void HardCasesTest::whiteFurnaceConverged_data()
+{
+    QTest::addColumn<float>("rho");
+    QTest::newRow("rho 0.5") << 0.5f;
+    QTest::newRow("rho 0.8") << 0.8f;
+}
+
+// The defaults: the emitting walls are one area light, so the pixels' direct light is exact, E + rho E (checked
+// alone with indirect light off, where nothing else adds to it), and the voxels converge to rho E / (1 - rho c),
+// c being the share of its surroundings one gather captures (measured as in whiteFurnace). Pixels then read
+// E + rho E / (1 - rho c), which falls short of the physical E / (1 - rho) by what the cones leak through
+// one-voxel walls (docs/STABILITY.md has the figures).
+void HardCasesTest::whiteFurnaceConverged()
+{
+    QFETCH(float, rho);
+    const float emission = 1.0f;
+    render::Scene scene = furnace(rho, emission);
+    render::RenderSettings settings;
+    settings.voxelResolution = 64;
+    settings.indirectDivisor = 1;
+    settings.bounces = 1;
+    settings.direct = false;
+    const float capture = (io::ImageMetrics::meanRadiance(render(scene, settings, 48)).r - emission) / (rho * emission);
+
+    render::RenderSettings defaults;
+    defaults.voxelResolution = 64;
+    defaults.indirectDivisor = 1;
+    defaults.indirectDiffuse = false;
+    const render::RadianceImage direct = render(scene, defaults, 48);
+    expectSane(direct, 2.0f * emission * (1.0f + rho));
+    const float directMean = io::ImageMetrics::meanRadiance(direct).r;
+    int outliers = 0;
+    for (const glm::vec3& p : direct.pixels)
+        outliers += std::abs(p.r - emission * (1.0f + rho)) > 0.02f * emission * (1.0f + rho) ? 1 : 0;
+
+    defaults.indirectDiffuse = true;
+    const render::RadianceImage image = render(scene, defaults, 48);
+    const float physical = emission / (1.0f - rho);
+    expectSane(image, 2.0f * physical);
+    const float mean = io::ImageMetrics::meanRadiance(image).r;
+    const float model = emission + rho * emission / (1.0f - rho * capture);
+    qInfo("white furnace, rho %.1f: area light alone %.4f (exact %.4f, %d pixels off by 2%%); converged bounces %.4f, "
+          "gather model %.4f (capture %.3f), physical %.4f (%.1f%% short)",
+        double(rho), double(directMean), double(emission * (1.0f + rho)), outliers, double(mean), double(model),
+        double(capture), double(physical), 100.0 * double(1.0f - mean / physical));
+    QVERIFY2(std::abs(directMean - emission * (1.0f + rho)) <= 0.01f * emission * (1.0f + rho), qPrintable(QString::number(double(directMean))));
+    QCOMPARE(outliers, 0);
+    QVERIFY2(std::abs(mean - model) <= 0.03f * model, qPrintable(QString::number(double(mean))));
+    QVERIFY2(mean > emission * (1.0f + rho) && mean < physical, qPrintable(QString::number(double(mean))));
 }
 
 // No popping: nudging the camera by 1e-4 of the scene or the light by a hundredth of a voxel changes the image
@@ -459,9 +572,11 @@ void HardCasesTest::thinWallLeak()
     // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones (measured
     // 4.4% against 1.9%): a floor cell under the wall belongs to both rooms and gathers from one point above
     // the wall's voxels, where pixel cones start on their own side; hence its own bound (docs/STABILITY.md).
+    for (const int bounces : {1, render::RenderSettings::kConvergedBounces})
     for (const bool irradianceCache : {false, true}) {
         render::RenderSettings settings;
         settings.voxelResolution = 32;
+        settings.bounces = bounces;
         settings.irradianceCache = irradianceCache;
         scene.camera = {{-1.0f, 0.0f, 0.9f}, {-1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
         const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
@@ -470,10 +585,11 @@ void HardCasesTest::thinWallLeak()
         const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
         expectSane(m_gl.renderer->readFrame(), 10.0f);
         const double leak = dark / lit;
-        qInfo("thin wall%s: lit room %.4f, dark room %.4f, leak %.2f%%", irradianceCache ? ", irradiance cache" : "",
-            lit, dark, 100.0 * leak);
+        qInfo("thin wall%s, %s: lit room %.4f, dark room %.4f, leak %.2f%%", irradianceCache ? ", irradiance cache" : "",
+            bounces == 1 ? "one bounce" : "converged bounces", lit, dark, 100.0 * leak);
         QVERIFY(lit > 0.0);
-        QVERIFY2(leak < (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound), qPrintable(QString::number(leak)));
+        const double bound = bounces == 1 ? (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound) : kThinWallLeakBoundConverged;
+        QVERIFY2(leak < bound, qPrintable(QString::number(leak)));
     }
 }
 

@@ -1,0 +1,87 @@
+// One step of the bounce iteration (passes/VoxelBouncePass). Each occupied voxel's outgoing radiance becomes
+//   L = L_direct + albedo * sum_i w_i L_i,
+// the cone weights splitting the cosine lobe (sum_i w_i L_i = E / pi, and a Lambertian surface sends
+// albedo / pi * E), where sum_i w_i L_i is what the bounce cells gathered from the previous iterate
+// (irradiance/GatherCells.comp over every occupied cell), looked up as a pixel looks up the irradiance cache.
+// The step also sums, per work group, how much the voxels changed and how bright they are: the residual that
+// decides when the iteration has converged.
+#extension GL_NV_shader_atomic_float : require
+#include "common/OccupiedCells.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(binding = 0) uniform sampler3D uAlbedo;
+layout(binding = 1) uniform sampler3D uNormal;
+layout(binding = 2) uniform sampler3D uDirect; // first-bounce radiance (direct light and emission), premultiplied
+layout(rgba16f, binding = 0) uniform image3D uBounced; // the previous iterate in, the new one out
+layout(r32f, binding = 1) uniform image2D uResidual; // texel 0: sum of |change|, texel 1: sum of radiance
+
+uniform vec3 uGridOrigin;
+uniform float uVoxelSize;
+uniform int uCellVoxels; // voxels per bounce cell side
+uniform bool uCompare;   // the previous iterate is valid (not just cleared)
+
+#include "common/IrradianceLookup.glsl"
+
+shared float sChange[64];
+shared float sTotal[64];
+
+// The voxel's own cell, when no cell around it faces its way. A voxel whose faces cancel (a wall thinner than a
+// voxel, or two surfaces pressed together) sends the same radiance both ways, so it takes the mean of what
+// reaches its two sides: that keeps the power it reflects, where the sum would send each side's light out of
+// both sides and, two faces lighting each other, grow without bound from one iteration to the next.
+vec3 ownCell(ivec3 voxel, vec3 n, bool faced)
+{
+    ivec3 cell = voxel / uCellVoxels;
+    vec4 cellNormal = texelFetch(uCellNormal, cell, 0);
+    if (cellNormal.w <= 0.0)
+        return vec3(0.0);
+    vec4 front = texelFetch(uIrradiance, cell, 0);
+    if (cellNormal.w < 1.5)
+        return max(front.rgb, vec3(0.0));
+    vec4 back = texelFetch(uIrradianceBack, cell, 0);
+    if (!faced)
+        return 0.5 * (max(front.rgb, vec3(0.0)) + max(back.rgb, vec3(0.0)));
+    return max(dot(n, cellNormal.xyz) >= 0.0 ? front.rgb : back.rgb, vec3(0.0));
+}
+
+void main()
+{
+    ivec3 voxel;
+    bool listed = occupiedCell(voxel);
+    float change = 0.0, total = 0.0;
+    if (listed) {
+        vec4 albedo = texelFetch(uAlbedo, voxel, 0);
+        vec4 result = texelFetch(uDirect, voxel, 0);
+        if (albedo.a > 0.0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
+            vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
+            float normalLength = length(normalSum);
+            bool faced = normalLength >= 0.5;
+            vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
+            vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
+            vec4 looked;
+            vec3 gathered = faced && lookUpIrradiance(p, n, looked) ? looked.rgb : ownCell(voxel, n, faced);
+            result.rgb += albedo.rgb * gathered * albedo.a;
+        }
+        if (uCompare) {
+            vec3 previous = imageLoad(uBounced, voxel).rgb;
+            change = dot(abs(result.rgb - previous), vec3(1.0));
+        }
+        total = dot(result.rgb, vec3(1.0));
+        imageStore(uBounced, voxel, result);
+    }
+    sChange[gl_LocalInvocationIndex] = change;
+    sTotal[gl_LocalInvocationIndex] = total;
+    barrier();
+    for (uint stride = 32u; stride > 0u; stride >>= 1u) {
+        if (gl_LocalInvocationIndex < stride) {
+            sChange[gl_LocalInvocationIndex] += sChange[gl_LocalInvocationIndex + stride];
+            sTotal[gl_LocalInvocationIndex] += sTotal[gl_LocalInvocationIndex + stride];
+        }
+        barrier();
+    }
+    if (gl_LocalInvocationIndex == 0u) {
+        imageAtomicAdd(uResidual, ivec2(0, 0), sChange[0]);
+        imageAtomicAdd(uResidual, ivec2(1, 0), sTotal[0]);
+    }
+}

@@ -1,0 +1,199 @@
+// Area lights (core/AreaLightSet): emissive triangles grouped into lights, shared by the composite (per pixel)
+// and light injection (per voxel), so the light that bounces is the light the pixels see.
+//   AREA_LIGHT_COUNT  lights in the table (compile-time, as the other light kinds: llvmpipe unrolls the loop)
+// Irradiance from each light's triangles is exact for a Lambertian receiver: the contour integral over each
+// triangle's edges (Lambert's formula, as in Arvo 1995), after clipping the triangle to the receiver's upper
+// hemisphere, and only from triangles whose front (counter-clockwise) face looks at the receiver: emission is
+// one-sided. Visibility is one cone from the receiver toward the light's bounding sphere through the voxel
+// opacity, its aperture the sphere's angular size: soft shadows whose penumbra grows with the light and
+// shrinks toward the occluder (Crassin et al. 2011). Units: radiance W/(m^2 sr) in, irradiance W/m^2 out.
+#define kAreaLightCount AREA_LIGHT_COUNT
+#ifndef AREA_LIGHT_UNIT
+#define AREA_LIGHT_UNIT 11
+#endif
+#ifndef OPACITY_UNIT
+#define OPACITY_UNIT 15
+#endif
+
+layout(binding = AREA_LIGHT_UNIT) uniform samplerBuffer uAreaLights; // three rgba32f texels per light, then three per triangle
+layout(binding = OPACITY_UNIT) uniform sampler3D uOpacity;         // VoxelVolume::opacity, full mip chain
+uniform vec3 uOpacityOrigin;   // the voxel grid's corner, metres
+uniform float uOpacityExtent;  // its side, metres
+uniform float uOpacityVoxel;   // one voxel, metres
+uniform float uOpacityMaxLevel;
+
+const float kAreaPi = 3.14159265358979;
+// The widest visibility cone: a light close by subtends a wide angle, and a cone wider than this starts
+// sampling the receiver's own surface around it.
+const float kMaxVisibilityTan = 0.58; // 30 degrees half-angle
+
+// Sum over the polygon's edges of theta_i * (n . unit(v_i x v_{i+1})): 2 pi times its projected solid angle.
+float edgeTerm(vec3 a, vec3 b, vec3 n)
+{
+    vec3 c = cross(a, b);
+    float s = length(c);
+    float theta = atan(s, dot(a, b));
+    return s > 1e-12 ? theta * dot(c, n) / s : 0.0;
+}
+
+// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
+// receiver, above the plane with normal n; the triangle is clipped to that plane first.
+float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
+{
+    vec3 v[3] = vec3[3](a, b, c);
+    vec3 q[4];
+    int count = 0;
+    for (int i = 0; i < 3; ++i) {
+        vec3 p0 = v[i];
+        vec3 p1 = v[(i + 1) % 3];
+        float d0 = dot(p0, n);
+        float d1 = dot(p1, n);
+        if (d0 >= 0.0 && count < 4)
+            q[count++] = p0;
+        if ((d0 >= 0.0) != (d1 >= 0.0) && count < 4)
+            q[count++] = p0 + (p1 - p0) * (d0 / (d0 - d1));
+    }
+    if (count < 3)
+        return 0.0;
+    float sum = 0.0;
+    for (int i = 0; i < count; ++i)
+        sum += edgeTerm(normalize(q[i]), normalize(q[(i + 1) % count]), n);
+    return 0.5 * abs(sum);
+}
+
+// 1 where nothing lies between p and the light's sphere, 0 behind opaque voxels, soft in between.
+float areaLightVisibility(vec3 p, vec3 centre, float radius)
+{
+    vec3 d = centre - p;
+    float distance = length(d);
+    if (distance <= radius)
+        return 1.0;
+    vec3 dir = d / distance;
+    float tanHalf = min(radius / distance, kMaxVisibilityTan);
+    // Stop where the cone's footprint would reach into the light's own sphere: the light, and the surface
+    // it is mounted on, must not shadow themselves.
+    float end = (distance - radius) / (1.0 + 2.0 * tanHalf);
+    float alpha = 0.0;
+    float t = uOpacityVoxel;
+    for (int i = 0; i < 96 && t < end && alpha < 0.99; ++i) {
+        float diameter = max(uOpacityVoxel, 2.0 * t * tanHalf);
+        float level = clamp(log2(diameter / uOpacityVoxel), 0.0, uOpacityMaxLevel);
+        vec3 uvw = (p + t * dir - uOpacityOrigin) / uOpacityExtent;
+        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
+            break;
+        float stepLength = diameter;
+        float a = textureLod(uOpacity, uvw, level).r;
+        a = 1.0 - pow(clamp(1.0 - a, 0.0, 1.0), stepLength / (uOpacityVoxel * exp2(level)));
+        alpha += (1.0 - alpha) * a;
+        t += stepLength;
+    }
+    return clamp(1.0 - alpha, 0.0, 1.0);
+}
+
+// Irradiance (W/m^2) at p on a surface with normal n from every area light, shadowed. The visibility cone
+// starts `offset` metres along n.
+vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
+{
+    vec3 irradiance = vec3(0.0);
+    for (int i = 0; i < kAreaLightCount; ++i) {
+        vec4 radianceFirst = texelFetch(uAreaLights, 3 * i);
+        vec4 sphere = texelFetch(uAreaLights, 3 * i + 1);
+        vec4 areaCount = texelFetch(uAreaLights, 3 * i + 2);
+        int first = int(radianceFirst.w + 0.5);
+        int count = int(areaCount.y + 0.5);
+        float factor = 0.0;
+        for (int k = 0; k < count; ++k) {
+            int base = 3 * kAreaLightCount + 3 * (first + k);
+            vec3 a = texelFetch(uAreaLights, base).xyz - p;
+            vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
+            vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
+            // One-sided: the receiver must be in front of the triangle (its front is counter-clockwise).
+            if (dot(cross(b - a, c - a), -a) <= 0.0)
+                continue;
+            factor += clippedTriangleIrradianceFactor(a, b, c, n);
+        }
+        if (factor <= 0.0)
+            continue;
+        irradiance += radianceFirst.rgb * factor * areaLightVisibility(p + n * offset, sphere.xyz, sphere.w);
+    }
+    return irradiance;
+}
+
+// The point of triangle (a, b, c) closest to x (Ericson, Real-Time Collision Detection 5.1.5).
+vec3 closestOnTriangle(vec3 x, vec3 a, vec3 b, vec3 c)
+{
+    vec3 ab = b - a, ac = c - a, ax = x - a;
+    float d1 = dot(ab, ax), d2 = dot(ac, ax);
+    if (d1 <= 0.0 && d2 <= 0.0)
+        return a;
+    vec3 bx = x - b;
+    float d3 = dot(ab, bx), d4 = dot(ac, bx);
+    if (d3 >= 0.0 && d4 <= d3)
+        return b;
+    float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+        return a + ab * (d1 / (d1 - d3));
+    vec3 cx = x - c;
+    float d5 = dot(ab, cx), d6 = dot(ac, cx);
+    if (d6 >= 0.0 && d5 <= d6)
+        return c;
+    float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+        return a + ac * (d2 / (d2 - d6));
+    float va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    float denom = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Radiance the normalised Phong lobe (exponent `shininess` about `mirror`, times the caller's specular colour)
+// reflects from every area light, shadowed. The lobe is taken as a cap of the solid angle that holds its
+// peak's worth, 2 pi / (shininess + 2). Of it, a light covers all where the mirror ray meets one of its
+// triangles, and otherwise a share that falls off with the angle to the light's nearest point, over one lobe
+// radius (the light's edge taken as straight); never more than the solid angle the light subtends. An
+// approximation of the lobe integral (a representative point, after Karis 2013; linearly transformed cosines,
+// Heitz et al. 2016, would be exact for polygons).
+vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offset)
+{
+    vec3 reflected = vec3(0.0);
+    float lobeSolidAngle = 2.0 * kAreaPi / (shininess + 2.0);
+    float lobeHalf = acos(1.0 - 1.0 / (shininess + 2.0));
+    float peak = (shininess + 2.0) / (2.0 * kAreaPi);
+    float cosine = max(dot(n, mirror), 0.0);
+    for (int i = 0; i < kAreaLightCount; ++i) {
+        vec4 radianceFirst = texelFetch(uAreaLights, 3 * i);
+        vec4 sphere = texelFetch(uAreaLights, 3 * i + 1);
+        int first = int(radianceFirst.w + 0.5);
+        int count = int(texelFetch(uAreaLights, 3 * i + 2).y + 0.5);
+        float coverage = 0.0;
+        float solidAngle = 0.0;
+        for (int k = 0; k < count; ++k) {
+            int base = 3 * kAreaLightCount + 3 * (first + k);
+            vec3 a = texelFetch(uAreaLights, base).xyz - p;
+            vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
+            vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
+            vec3 normal = cross(b - a, c - a);
+            if (dot(normal, -a) <= 0.0)
+                continue; // one-sided: its back faces the receiver
+            float twiceArea = length(normal);
+            normal /= twiceArea;
+            vec3 middle = (a + b + c) / 3.0;
+            float distance2 = max(dot(middle, middle), 1e-30);
+            solidAngle += 0.5 * twiceArea * abs(dot(normal, middle)) / (distance2 * sqrt(distance2));
+            // Where the mirror ray meets the triangle's plane, or its nearest point to the ray if it never does.
+            float along = dot(mirror, normal);
+            float t = along < 0.0 ? dot(a, normal) / along : dot(middle, mirror);
+            vec3 onRay = mirror * max(t, 0.0);
+            vec3 nearest = closestOnTriangle(onRay, a, b, c);
+            bool hit = along < 0.0 && t > 0.0 && length(nearest - onRay) <= 1e-4 * t;
+            float apart = acos(clamp(dot(normalize(nearest), mirror), -1.0, 1.0));
+            coverage = max(coverage, hit ? 1.0 : 0.5 * (1.0 - smoothstep(0.0, 1.0, apart / lobeHalf)));
+        }
+        float overlap = min(coverage * lobeSolidAngle, solidAngle);
+        if (overlap <= 0.0)
+            continue;
+        reflected += radianceFirst.rgb * peak * overlap * cosine * areaLightVisibility(p + n * offset, sphere.xyz, sphere.w);
+    }
+    return reflected;
+}
