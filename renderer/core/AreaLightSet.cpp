@@ -117,6 +117,23 @@ AreaLightSet AreaLightSet::fromScene(const Scene& scene)
         light.centre = box.center();
         for (std::size_t k = std::size_t(light.firstTriangle) * 3; k < set.triangles.size(); ++k)
             light.radius = std::max(light.radius, glm::length(set.triangles[k] - light.centre));
+        // Planar when every triangle faces the first one's way and every corner lies in its plane.
+        const glm::vec3* first = &set.triangles[std::size_t(light.firstTriangle) * 3];
+        const glm::vec3 normal = glm::normalize(glm::cross(first[1] - first[0], first[2] - first[0]));
+        const float offset = glm::dot(normal, first[0]);
+        light.planar = true;
+        for (std::size_t k = std::size_t(light.firstTriangle) * 3; k < set.triangles.size(); k += 3) {
+            const glm::vec3* t = &set.triangles[k];
+            const glm::vec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
+            for (int c = 0; c < 3; ++c)
+                light.planar = light.planar
+                    && std::abs(glm::dot(normal, t[c]) - offset) <= 1e-4f * std::max(light.radius, weld);
+            light.planar = light.planar && glm::dot(n, normal) > 0.9999f;
+        }
+        if (light.planar) {
+            light.planeNormal = normal;
+            light.planeOffset = offset;
+        }
         set.lights.push_back(light);
     }
     return set;

@@ -23,6 +23,11 @@ struct AreaLight {
     float area = 0.0f; ///< m^2
     int firstTriangle = 0; ///< into AreaLightSet::triangles (three corners each)
     int triangleCount = 0;
+    /// All triangles in one plane, facing planeNormal (dot(planeNormal, x) = planeOffset): the shadow cone
+    /// then stops short of that plane rather than of the bounding sphere.
+    bool planar = false;
+    glm::vec3 planeNormal { 0.0f };
+    float planeOffset = 0.0f;
 };
 
 /**

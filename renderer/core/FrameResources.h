@@ -35,8 +35,9 @@ struct VoxelVolume {
     gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
     gl::Texture emission; ///< rgba16f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
-    /// r8, full mip chain: 1 where a voxel is occupied, box-filtered above. The area lights' visibility cones
-    /// trace it (common/AreaLights.glsl); built by light injection when there are area lights.
+    /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along that
+    /// axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones trace it
+    /// (common/AreaLights.glsl); built by light injection when there are area lights.
     gl::Texture opacity;
     std::uint64_t opacityVersion = 0; ///< the materialsVersion `opacity` was built for
     /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid

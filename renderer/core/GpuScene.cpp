@@ -107,13 +107,15 @@ void GpuScene::rebuildAreaLights()
 {
     m_areaLights = AreaLightSet::fromScene(m_scene);
     ++m_areaLightsVersion;
-    // Three rgba32f texels per light (radiance + first triangle; sphere centre + radius; area + triangle
-    // count), then three per triangle (its corners), as shaders/common/AreaLights.glsl reads them.
+    // Four rgba32f texels per light (radiance + first triangle; sphere centre + radius; area, triangle count,
+    // planar flag; plane normal + offset), then three per triangle (its corners), as
+    // shaders/common/AreaLights.glsl reads them.
     std::vector<glm::vec4> entries;
     for (const AreaLight& light : m_areaLights.lights) {
         entries.emplace_back(light.radiance, float(light.firstTriangle));
         entries.emplace_back(light.centre, light.radius);
-        entries.emplace_back(light.area, float(light.triangleCount), 0.0f, 0.0f);
+        entries.emplace_back(light.area, float(light.triangleCount), light.planar ? 1.0f : 0.0f, 0.0f);
+        entries.emplace_back(light.planeNormal, light.planeOffset);
     }
     for (const glm::vec3& corner : m_areaLights.triangles)
         entries.emplace_back(corner, 1.0f);

@@ -236,7 +236,7 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
     std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 4n x 3n x n
     bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
     bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
-    bytes += chain(n, 1, true);                                  // opacity r8, full chain (area-light shadows)
+    bytes += chain(n, 4, true);                                  // opacity per axis, rgba8, full chain (area-light shadows)
     if (anisotropicMips && n >= 2)
         bytes += 11 * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
     if (bounces != 1) { // the bounced volume and its chains; the bounce cells (front, back, normal, rgba16f)

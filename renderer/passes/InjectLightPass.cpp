@@ -105,17 +105,28 @@ void InjectLightPass::buildOpacity(FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     if (v.opacityVersion == v.materialsVersion)
         return;
-    if (!m_markOpacity)
+    if (!m_markOpacity) {
         m_markOpacity = frame.shaders.build({"mark opacity", {"inject/MarkOpacity.comp"}, {}});
+        m_downsampleOpacity = frame.shaders.build({"downsample opacity", {"inject/DownsampleOpacity.comp"}, {}});
+    }
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(v.opacity.id(), 0, GL_RED, GL_FLOAT, zero);
+    glClearTexImage(v.opacity.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     m_markOpacity.use();
     v.opacity.bindImage(0, 0, GL_WRITE_ONLY);
     for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
         voxels->dispatchOverCells();
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glGenerateTextureMipmap(v.opacity.id());
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    m_downsampleOpacity.use();
+    v.opacity.bindUnit(0);
+    for (int level = 1; level < v.opacity.levels(); ++level) {
+        const int side = std::max(1, v.opacity.width() >> level);
+        m_downsampleOpacity.set("uSourceLevel", level - 1);
+        v.opacity.bindImage(0, level, GL_WRITE_ONLY);
+        const GLuint groups = GLuint((side + 3) / 4);
+        glDispatchCompute(groups, groups, groups);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
     v.opacityVersion = v.materialsVersion;
 }
 

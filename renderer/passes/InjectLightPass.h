@@ -37,6 +37,7 @@ private:
     void buildOpacity(FrameContext& frame);
     std::map<std::tuple<int, int, int>, gl::Program> m_programs; ///< by point, directional and area light count
     gl::Program m_markOpacity;
+    gl::Program m_downsampleOpacity;
     OccupiedCellList m_occupied;
     std::array<std::uint64_t, 5> m_key{};
 };

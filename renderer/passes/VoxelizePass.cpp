@@ -51,7 +51,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     v.normal = gl::Texture::create3D(GL_RGBA16F, res);
     v.emission = gl::Texture::create3D(GL_RGBA16F, res);
     v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
-    v.opacity = gl::Texture::create3D(GL_R8, res, levels);
+    v.opacity = gl::Texture::create3D(GL_RGBA8, res, levels);
     v.opacityVersion = 0;
     for (gl::Texture* t : {&v.staticAlbedo, &v.staticNormal, &v.staticEmission, &v.albedo, &v.normal, &v.emission})
         t->setFilter(GL_NEAREST, GL_NEAREST);

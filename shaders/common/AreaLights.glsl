@@ -4,9 +4,9 @@
 // Irradiance from each light's triangles is exact for a Lambertian receiver: the contour integral over each
 // triangle's edges (Lambert's formula, as in Arvo 1995), after clipping the triangle to the receiver's upper
 // hemisphere, and only from triangles whose front (counter-clockwise) face looks at the receiver: emission is
-// one-sided. Visibility is one cone from the receiver toward the light's bounding sphere through the voxel
-// opacity, its aperture the sphere's angular size: soft shadows whose penumbra grows with the light and
-// shrinks toward the occluder (Crassin et al. 2011). Units: radiance W/(m^2 sr) in, irradiance W/m^2 out.
+// one-sided. Visibility is one cone from the receiver toward the light through the voxel opacity, its aperture
+// the light's angular size: soft shadows whose penumbra grows with the light and shrinks toward the occluder
+// (Crassin et al. 2011). Units: radiance W/(m^2 sr) in, irradiance W/m^2 out.
 #define kAreaLightCount AREA_LIGHT_COUNT
 #ifndef AREA_LIGHT_UNIT
 #define AREA_LIGHT_UNIT 11
@@ -15,7 +15,7 @@
 #define OPACITY_UNIT 15
 #endif
 
-layout(binding = AREA_LIGHT_UNIT) uniform samplerBuffer uAreaLights; // three rgba32f texels per light, then three per triangle
+layout(binding = AREA_LIGHT_UNIT) uniform samplerBuffer uAreaLights; // four rgba32f texels per light, then three per triangle
 layout(binding = OPACITY_UNIT) uniform sampler3D uOpacity;         // VoxelVolume::opacity, full mip chain
 uniform vec3 uOpacityOrigin;   // the voxel grid's corner, metres
 uniform float uOpacityExtent;  // its side, metres
@@ -61,33 +61,70 @@ float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
     return 0.5 * abs(sum);
 }
 
-// 1 where nothing lies between p and the light's sphere, 0 behind opaque voxels, soft in between.
-float areaLightVisibility(vec3 p, vec3 centre, float radius)
+// Transmittance along one cone from p (already `offset` along the receiver's normal n) in direction dir, of
+// tangent half-angle tanHalf, up to the light: to its plane when it is planar (plane.w > 0.5 in `planar`), else to
+// its bounding sphere. Each sample's footprint is kept clear of the receiver's tangent plane and of the light's
+// own plane by three footprints (trilinear lookups reach up to one and a half texels of up to twice the
+// footprint): otherwise coarse levels would take the receiver's own surface, or the ceiling a lamp is
+// mounted on, for an occluder. The cone is therefore narrow at both ends and widest between.
+float coneTransmittance(vec3 p, vec3 dir, float tanHalf, vec3 n, float offset, vec4 sphere, vec4 plane, bool planar)
 {
-    vec3 d = centre - p;
-    float distance = length(d);
-    if (distance <= radius)
-        return 1.0;
-    vec3 dir = d / distance;
-    float tanHalf = min(radius / distance, kMaxVisibilityTan);
-    // Stop where the cone's footprint would reach into the light's own sphere: the light, and the surface
-    // it is mounted on, must not shadow themselves.
-    float end = (distance - radius) / (1.0 + 2.0 * tanHalf);
+    float cosReceiver = max(dot(dir, n), 0.05);
+    float end, cosLight;
+    if (planar) {
+        cosLight = max(-dot(plane.xyz, dir), 0.05);
+        end = (dot(plane.xyz, p) - plane.w) / cosLight;
+    } else {
+        cosLight = 1.0;
+        end = length(sphere.xyz - p) - sphere.w;
+    }
     float alpha = 0.0;
-    float t = uOpacityVoxel;
-    for (int i = 0; i < 96 && t < end && alpha < 0.99; ++i) {
-        float diameter = max(uOpacityVoxel, 2.0 * t * tanHalf);
+    float t = 0.5 * uOpacityVoxel;
+    for (int k = 0; k < 128 && alpha < 0.99; ++k) {
+        float clearance = min(offset + t * cosReceiver, (end - t) * cosLight) / 3.0;
+        if (clearance < 0.5 * uOpacityVoxel)
+            break; // at the light
+        float diameter = clamp(2.0 * t * tanHalf, uOpacityVoxel, max(clearance, uOpacityVoxel));
         float level = clamp(log2(diameter / uOpacityVoxel), 0.0, uOpacityMaxLevel);
         vec3 uvw = (p + t * dir - uOpacityOrigin) / uOpacityExtent;
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
             break;
-        float stepLength = diameter;
-        float a = textureLod(uOpacity, uvw, level).r;
-        a = 1.0 - pow(clamp(1.0 - a, 0.0, 1.0), stepLength / (uOpacityVoxel * exp2(level)));
+        // Level 0 holds the same opacity in every channel; above, the three axes' crossings weighted by how
+        // much of the path runs along each.
+        float a = dot(textureLod(uOpacity, uvw, level).rgb, dir * dir);
+        a = 1.0 - pow(clamp(1.0 - a, 0.0, 1.0), diameter / (uOpacityVoxel * exp2(level)));
         alpha += (1.0 - alpha) * a;
-        t += stepLength;
+        t += diameter;
     }
     return clamp(1.0 - alpha, 0.0, 1.0);
+}
+
+// 1 where nothing lies between p and light i, 0 behind opaque voxels, soft in between (Crassin et al. 2011's
+// soft shadows). The light, taken as a disk of its area, is covered by four cones of half its angular radius
+// around its centre: one cone as wide as the light would have to narrow to keep clear of the receiver
+// (coneTransmittance) exactly where an occluder halfway decides the penumbra.
+float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
+{
+    vec4 sphere = texelFetch(uAreaLights, 4 * i + 1);
+    vec4 areaCount = texelFetch(uAreaLights, 4 * i + 2);
+    vec4 plane = texelFetch(uAreaLights, 4 * i + 3);
+    bool planar = areaCount.z > 0.5;
+    vec3 d = sphere.xyz - p;
+    float distance = length(d);
+    if (distance <= 1e-30)
+        return 1.0;
+    vec3 dir = d / distance;
+    float tanHalf = min(sqrt(areaCount.x / kAreaPi) / distance, kMaxVisibilityTan);
+    vec3 u = normalize(abs(dir.x) < 0.9 ? cross(dir, vec3(1.0, 0.0, 0.0)) : cross(dir, vec3(0.0, 1.0, 0.0)));
+    vec3 v = cross(dir, u);
+    float spread = 0.5 * tanHalf * 0.70710678;
+    float visibility = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        vec2 s = vec2((k & 1) == 0 ? -1.0 : 1.0, (k & 2) == 0 ? -1.0 : 1.0);
+        vec3 sub = normalize(dir + spread * (s.x * u + s.y * v));
+        visibility += 0.25 * coneTransmittance(p, sub, 0.5 * tanHalf, n, offset, sphere, plane, planar);
+    }
+    return visibility;
 }
 
 // Irradiance (W/m^2) at p on a surface with normal n from every area light, shadowed. The visibility cone
@@ -96,14 +133,13 @@ vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
 {
     vec3 irradiance = vec3(0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
-        vec4 radianceFirst = texelFetch(uAreaLights, 3 * i);
-        vec4 sphere = texelFetch(uAreaLights, 3 * i + 1);
-        vec4 areaCount = texelFetch(uAreaLights, 3 * i + 2);
+        vec4 radianceFirst = texelFetch(uAreaLights, 4 * i);
+        vec4 areaCount = texelFetch(uAreaLights, 4 * i + 2);
         int first = int(radianceFirst.w + 0.5);
         int count = int(areaCount.y + 0.5);
         float factor = 0.0;
         for (int k = 0; k < count; ++k) {
-            int base = 3 * kAreaLightCount + 3 * (first + k);
+            int base = 4 * kAreaLightCount + 3 * (first + k);
             vec3 a = texelFetch(uAreaLights, base).xyz - p;
             vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
             vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
@@ -114,7 +150,7 @@ vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
         }
         if (factor <= 0.0)
             continue;
-        irradiance += radianceFirst.rgb * factor * areaLightVisibility(p + n * offset, sphere.xyz, sphere.w);
+        irradiance += radianceFirst.rgb * factor * areaLightVisibility(p + n * offset, n, offset, i);
     }
     return irradiance;
 }
@@ -162,14 +198,13 @@ vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offse
     float peak = (shininess + 2.0) / (2.0 * kAreaPi);
     float cosine = max(dot(n, mirror), 0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
-        vec4 radianceFirst = texelFetch(uAreaLights, 3 * i);
-        vec4 sphere = texelFetch(uAreaLights, 3 * i + 1);
+        vec4 radianceFirst = texelFetch(uAreaLights, 4 * i);
         int first = int(radianceFirst.w + 0.5);
-        int count = int(texelFetch(uAreaLights, 3 * i + 2).y + 0.5);
+        int count = int(texelFetch(uAreaLights, 4 * i + 2).y + 0.5);
         float coverage = 0.0;
         float solidAngle = 0.0;
         for (int k = 0; k < count; ++k) {
-            int base = 3 * kAreaLightCount + 3 * (first + k);
+            int base = 4 * kAreaLightCount + 3 * (first + k);
             vec3 a = texelFetch(uAreaLights, base).xyz - p;
             vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
             vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
@@ -193,7 +228,7 @@ vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offse
         float overlap = min(coverage * lobeSolidAngle, solidAngle);
         if (overlap <= 0.0)
             continue;
-        reflected += radianceFirst.rgb * peak * overlap * cosine * areaLightVisibility(p + n * offset, sphere.xyz, sphere.w);
+        reflected += radianceFirst.rgb * peak * overlap * cosine * areaLightVisibility(p + n * offset, n, offset, i);
     }
     return reflected;
 }

@@ -14,7 +14,6 @@ layout(early_fragment_tests) in;
 
 layout(binding = 1) uniform usampler2D gSurface;
 
-uniform float uConeOffset; // metres along the normal
 uniform vec3 uCameraPosition;
 
 layout(location = 0) out vec4 oDiffuse; // rgb: sum_i w_i L_i, a: ambient visibility

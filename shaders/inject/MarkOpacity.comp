@@ -1,11 +1,11 @@
 // Level 0 of the opacity volume the area lights' visibility cones trace (common/AreaLights.glsl): 1 in every
 // occupied voxel. Runs over the voxelizer's lists of occupied voxels; the rest of the level was cleared to 0,
-// and the mips are box-filtered after it.
+// and the levels above are built from it (inject/DownsampleOpacity.comp).
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;
 
-layout(r8, binding = 0) writeonly uniform image3D uOpacity;
+layout(rgba8, binding = 0) writeonly uniform image3D uOpacity;
 
 void main()
 {

@@ -25,7 +25,6 @@ layout(rgba16f, binding = 2) writeonly uniform image3D uCellNormal;
 
 uniform int uResolution; // voxels per side
 uniform int uCellSize;   // voxels per cell side
-uniform float uConeOffset; // metres along the normal
 uniform int uOne;          // 1
 
 const vec4 kNone = vec4(0.0, 0.0, 0.0, -1.0);

@@ -358,7 +358,7 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
     settings.irradianceCache = false;
     settings.bounces = 1; // nor the bounce volume
     const std::string problem = settings.set("voxel_res", "512");
-    QVERIFY2(problem.find("voxel_res=512 needs 12.3 GiB") != std::string::npos, problem.c_str());
+    QVERIFY2(problem.find("voxel_res=512 needs 12.7 GiB") != std::string::npos, problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
     QCOMPARE(settings.voxelResolution, 32);
     // With the budget raised, the same grid is accepted: the limit is memory, not the code.
@@ -388,10 +388,11 @@ void HardCasesTest::whiteFurnace()
     const float rho = 0.5f, emission = 1.0f;
     render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
-    // 5% with 60-degree cones: voxels on the box's edges and corners average wall with empty space, so cones
-    // leaving through them see slightly less than a full wall. 10% with the default 30-degree cones: a narrow
-    // cone's geometric steps (1.5x per step) can carry its last sample past a wall on the grid's boundary, so
-    // part of the wall is seen at a coarser, half-empty level (measured 7.2%; docs/STABILITY.md).
+    // 7% with 60-degree cones (measured 5.5%): voxels on the box's edges and corners average wall with empty
+    // space, so cones leaving through them see less than a full wall, and a wide cone leaving at an angle
+    // narrows to keep clear of its own wall (common/ConeTracing.glsl), reaching the leaky coarse levels later.
+    // 10% with the default 30-degree cones: steps through a wall one voxel thick see it at a coarser,
+    // half-empty level (measured 7.2%; docs/STABILITY.md).
     // The irradiance cache gathers the same cones per cell instead of per pixel, so the same bound holds.
     struct Case {
         bool anisotropic;
@@ -399,7 +400,7 @@ void HardCasesTest::whiteFurnace()
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : {Case {false, 60.0f, false, 0.0f}, Case {true, 60.0f, false, 0.05f}, Case {true, 30.0f, false, 0.10f},
+    for (const Case c : {Case {false, 60.0f, false, 0.0f}, Case {true, 60.0f, false, 0.07f}, Case {true, 30.0f, false, 0.10f},
              Case {true, 30.0f, true, 0.10f}}) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
@@ -429,9 +430,9 @@ void HardCasesTest::whiteFurnace()
 }
 
 // With bounces = 2 each voxel gathers a bounce first, so pixels see E + rho E + rho^2 E. Each gather captures
-// a share c of the light around it (c = 0.91 with anisotropic mips, from the single-bounce case), so the
-// renderer should give E + rho c (E + rho c E): within 1% of that (the gather per voxel and per pixel is the
-// same code), and within 7% of the physical value (c^2 compounds the single-bounce 5%).
+// a share c of the light around it (c = 0.82 with anisotropic mips and 60-degree cones, from the single-bounce
+// case), so the renderer should give E + rho c (E + rho c E): within 1% of that (the gather per cell and per
+// pixel is the same code), and within 11% of the physical value (measured 9.8%: c compounds).
 void HardCasesTest::whiteFurnaceSecondBounce()
 {
     const float rho = 0.5f, emission = 1.0f;
@@ -454,7 +455,7 @@ void HardCasesTest::whiteFurnaceSecondBounce()
     qInfo("white furnace, two bounces: mean %.4f, gather model %.4f (capture %.3f), physical %.4f", double(mean),
         double(model), double(capture), double(physical));
     QVERIFY2(std::abs(mean - model) <= 0.01f * model, qPrintable(QString::number(double(mean))));
-    QVERIFY2(std::abs(mean - physical) <= 0.07f * physical, qPrintable(QString::number(double(mean))));
+    QVERIFY2(std::abs(mean - physical) <= 0.11f * physical, qPrintable(QString::number(double(mean))));
 }
 
 void HardCasesTest::whiteFurnaceConverged_data()

@@ -118,7 +118,7 @@ void CornellImageTest::referenceRelativeMse_data()
     QTest::addColumn<QString>("name");
     QTest::addColumn<double>("bound");
     // The light-transport targets (docs/ACCURACY.md): the box lit by its emitters within relative MSE 0.05; the
-    // point-lit box is at 0.036 against the aim of 0.03, bounded here by what it measures.
+    // point-lit box is at 0.033 against the aim of 0.03, bounded here a little above what it measures.
     QTest::newRow("cornell") << QStringLiteral("cornell") << 0.05;
     QTest::newRow("cornell_point") << QStringLiteral("cornell_point") << 0.04;
 }

@@ -1,0 +1,184 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include "core/AreaLightSet.h"
+#include "reference/ReferenceRenderer.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <QtTest>
+
+using namespace vct;
+
+namespace {
+
+constexpr int kSize = 96;
+constexpr float kAlbedo = 0.5f;
+constexpr float kRadiance = 10.0f; // W/(m^2 sr)
+
+/** A 4 x 4 m floor, a 1 x 1 m square light 1 m above its centre facing down, optionally a 0.5 m square
+ * blocker. */
+render::Scene lightOverFloor(bool blocker)
+{
+    render::Scene scene;
+    render::Material floor;
+    floor.albedo = glm::vec3(kAlbedo);
+    render::Material lamp;
+    lamp.albedo = glm::vec3(0.0f);
+    lamp.emission = glm::vec3(kRadiance);
+    render::Material black;
+    black.albedo = glm::vec3(0.0f);
+    scene.materials = { floor, lamp, black };
+    scene.meshes.push_back(
+        test::makeTriangles(test::quad({ -2, 0, 2 }, { 2, 0, 2 }, { 2, 0, -2 }, { -2, 0, -2 }), 0));
+    // Counter-clockwise seen from below: the light's front faces the floor.
+    scene.meshes.push_back(test::makeTriangles(
+        test::quad({ -0.5f, 1, -0.5f }, { 0.5f, 1, -0.5f }, { 0.5f, 1, 0.5f }, { -0.5f, 1, 0.5f }), 1));
+    if (blocker)
+        scene.meshes.push_back(
+            test::makeTriangles(test::quad({ -0.25f, 0.5f, -0.25f }, { 0.25f, 0.5f, -0.25f },
+                                    { 0.25f, 0.5f, 0.25f }, { -0.25f, 0.5f, 0.25f }),
+                2));
+    scene.camera = { { 0.0f, 2.6f, 3.5f }, { 0.0f, 0.0f, 0.0f }, { 0, 1, 0 }, 60.0f, 0.01f };
+    return scene;
+}
+
+/**
+ * Irradiance at floor point p from the light, by brute-force quadrature over the light's area:
+ * E = L * integral of cos(theta_floor) cos(theta_light) / r^2 dA. Independent of the contour integral the
+ * renderer evaluates.
+ */
+double quadratureIrradiance(const glm::dvec3& p)
+{
+    constexpr int n = 600;
+    double sum = 0.0;
+    const double cell = 1.0 / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const glm::dvec3 q(-0.5 + (i + 0.5) * cell, 1.0, -0.5 + (j + 0.5) * cell);
+            const glm::dvec3 d = q - p;
+            const double r2 = glm::dot(d, d);
+            const double cosFloor = d.y / std::sqrt(r2);
+            sum += cosFloor * cosFloor / r2 * cell * cell; // cos at the light equals cos at the floor here
+        }
+    return kRadiance * sum;
+}
+
+} // namespace
+
+/** Emitters as area lights: exact unshadowed irradiance, soft shadows close to the path tracer's. */
+class AreaLightsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void groupsConnectedEmitters();
+    void squareLightIrradianceIsExact();
+    void penumbraFollowsThePathTracer();
+
+private:
+    render::RadianceImage renderDirect(const render::Scene& scene);
+    test::GlTestContext m_gl;
+};
+
+void AreaLightsTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+}
+
+render::RadianceImage AreaLightsTest::renderDirect(const render::Scene& scene)
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 64;
+    settings.view = render::DebugView::Direct;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    m_gl.renderer->renderFrame(scene.camera, kSize, kSize);
+    return m_gl.renderer->readFrame();
+}
+
+// The light's two triangles share an edge: one light; the blocker emits nothing; a second lamp apart is a
+// second light.
+void AreaLightsTest::groupsConnectedEmitters()
+{
+    render::Scene scene = lightOverFloor(true);
+    render::AreaLightSet set = render::AreaLightSet::fromScene(scene);
+    QCOMPARE(set.lights.size(), std::size_t(1));
+    QCOMPARE(set.lights[0].triangleCount, 2);
+    QVERIFY(std::abs(set.lights[0].area - 1.0f) < 1e-5f);
+    QVERIFY(set.analytic());
+    scene.meshes.push_back(
+        test::makeTriangles(test::quad({ 1, 1, 1 }, { 1.2f, 1, 1 }, { 1.2f, 1, 1.2f }, { 1, 1, 1.2f }), 1));
+    set = render::AreaLightSet::fromScene(scene);
+    QCOMPARE(set.lights.size(), std::size_t(2));
+}
+
+// Nine points of the floor, from under the light's centre to beyond its corner: the direct radiance is
+// albedo / pi times the irradiance of the closed form, within 1%.
+void AreaLightsTest::squareLightIrradianceIsExact()
+{
+    const render::Scene scene = lightOverFloor(false);
+    const render::RadianceImage image = renderDirect(scene);
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+    double worst = 0.0;
+    for (const float x : { -1.0f, 0.0f, 1.0f })
+        for (const float z : { -1.0f, 0.0f, 1.0f }) {
+            // The pixel's own centre, since the camera looks at the floor at an angle.
+            const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, z }, kSize);
+            QVERIFY(pixel.x >= 0 && pixel.y >= 0 && pixel.x < kSize && pixel.y < kSize);
+            const double actual = image.at(pixel.x, pixel.y).r;
+            // Where the pixel's centre ray meets the floor, not the nominal point.
+            const glm::vec3 onFloor = [&] {
+                const glm::vec3 forward = glm::normalize(scene.camera.lookAt - scene.camera.position);
+                const glm::vec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
+                const glm::vec3 up = glm::cross(right, forward);
+                const float t = std::tan(glm::radians(scene.camera.fovYDeg) * 0.5f);
+                const float nx = 2.0f * (float(pixel.x) + 0.5f) / float(kSize) - 1.0f;
+                const float ny = 1.0f - 2.0f * (float(pixel.y) + 0.5f) / float(kSize);
+                const glm::vec3 dir = glm::normalize(forward + right * (nx * t) + up * (ny * t));
+                return scene.camera.position + dir * (-scene.camera.position.y / dir.y);
+            }();
+            const double expected = kAlbedo / glm::pi<double>() * quadratureIrradiance(glm::dvec3(onFloor));
+            const double error = std::abs(actual - expected) / expected;
+            qInfo("floor (%.2f, %.2f): %.5f, closed form %.5f (%.3f%%)", double(onFloor.x), double(onFloor.z),
+                actual, expected, 100.0 * error);
+            worst = std::max(worst, error);
+        }
+    qInfo("largest error %.3f%%", 100.0 * worst);
+    QVERIFY2(worst <= 0.01, qPrintable(QString("worst %1%").arg(100.0 * worst)));
+}
+
+// A blocker halfway: across the shadow, the direct radiance follows the path tracer's (direct light only)
+// within 10% of the unshadowed value, through umbra and penumbra.
+void AreaLightsTest::penumbraFollowsThePathTracer()
+{
+    const render::Scene scene = lightOverFloor(true);
+    const render::RadianceImage image = renderDirect(scene);
+    render::ReferenceSettings settings;
+    settings.maxBounces = 1;
+    render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize, settings);
+    QVERIFY(reference.render(256));
+    const render::RadianceImage truth = reference.image();
+    const double unshadowed = kAlbedo / glm::pi<double>() * quadratureIrradiance({ 0.0, 0.0, 0.0 });
+    double worst = 0.0;
+    for (int i = 0; i <= 24; ++i) {
+        const float x = -1.2f + 0.1f * float(i);
+        const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, 0.0f }, kSize);
+        // A 3 x 3 mean: the path tracer's noise, not its edge, should not decide.
+        double ours = 0.0, theirs = 0.0;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                ours += image.at(pixel.x + dx, pixel.y + dy).r / 9.0;
+                theirs += truth.at(pixel.x + dx, pixel.y + dy).r / 9.0;
+            }
+        qInfo("x %+.1f: %.4f, path tracer %.4f", double(x), ours, theirs);
+        worst = std::max(worst, std::abs(ours - theirs) / unshadowed);
+    }
+    qInfo("largest difference across the shadow: %.1f%% of the unshadowed radiance", 100.0 * worst);
+    QVERIFY2(worst <= 0.10, qPrintable(QString("worst %1% of the unshadowed radiance").arg(100.0 * worst)));
+}
+
+QTEST_GUILESS_MAIN(AreaLightsTest)
+#include "tst_AreaLights.moc"
