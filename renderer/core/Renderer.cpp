@@ -184,6 +184,8 @@ Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<Shade
     // Samplers of every type must have a texture even before the shadow pass has run once.
     m_state->shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, 1, 1);
     m_state->shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, 1, 1, 1);
+    m_state->shadows.pointDepth.setDepthComparison();
+    m_state->shadows.directionalDepth.setDepthComparison();
     m_state->scene = std::make_unique<GpuScene>(Scene{});
 }
 

@@ -118,6 +118,13 @@ void Texture::setFilter(GLenum minFilter, GLenum magFilter)
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(magFilter));
 }
 
+void Texture::setDepthComparison()
+{
+    glTextureParameteri(id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    setFilter(GL_LINEAR, GL_LINEAR);
+}
+
 void Texture::setWrap(GLenum wrap)
 {
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GLint(wrap));

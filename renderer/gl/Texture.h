@@ -41,6 +41,12 @@ public:
 
     void setFilter(GLenum minFilter, GLenum magFilter);
     void setWrap(GLenum wrap);
+    /**
+     * For a depth texture read by shadow samplers: lookups compare against the reference (less or equal) and
+     * filter the four nearest results bilinearly, so a shadow edge is the texel-area average it is in a
+     * reference image rather than a step.
+     */
+    void setDepthComparison();
     void setBorderColor(float r, float g, float b, float a);
     void bindUnit(GLuint unit) const;
     /** Binds one mip level as an image (all layers of a 3D or array texture). */

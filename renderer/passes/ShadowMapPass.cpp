@@ -46,6 +46,8 @@ void ShadowMapPass::ensureTextures(ShadowMaps& shadows, int size, int points, in
         || shadows.directionalDepth.depth() != std::max(directionals, 1)) {
         shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
         shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
+        shadows.pointDepth.setDepthComparison();
+        shadows.directionalDepth.setDepthComparison();
         shadows.size = size;
         m_staticPoint = gl::Texture();
         m_staticDirectional = gl::Texture();

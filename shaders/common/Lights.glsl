@@ -18,8 +18,10 @@ uniform float uPointShadowFar;
 uniform vec4 uDirectionalLightDirection[MAX_DIRECTIONAL_LIGHTS]; // travel direction, w = shadows
 uniform vec4 uDirectionalLightIrradiance[MAX_DIRECTIONAL_LIGHTS];
 uniform mat4 uDirectionalLightMatrix[MAX_DIRECTIONAL_LIGHTS];
-layout(binding = POINT_SHADOW_UNIT) uniform samplerCubeArray uPointShadow;
-layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DArray uDirectionalShadow;
+// Comparison samplers (gl::Texture::setDepthComparison): each lookup is the bilinear average of the four nearest
+// texels' depth tests, so shadow edges are texel-area averages, as a reference image's are, not steps.
+layout(binding = POINT_SHADOW_UNIT) uniform samplerCubeArrayShadow uPointShadow;
+layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DArrayShadow uDirectionalShadow;
 
 // p is already pushed off the surface by the caller; the bias absorbs depth quantisation only.
 float pointLightVisibility(int i, vec3 p)
@@ -31,11 +33,13 @@ float pointLightVisibility(int i, vec3 p)
     // component, and the stored window depth inverts to it through the face's perspective projection.
     vec3 a = abs(fromLight);
     float viewDepth = max(a.x, max(a.y, a.z));
-    float depth = textureLod(uPointShadow, vec4(fromLight, float(i)), 0.0).r;
     float n = uPointShadowNear;
     float f = uPointShadowFar;
-    float stored = n * f / (f - depth * (f - n));
-    return viewDepth <= stored + 1e-3 * f ? 1.0 : 0.0;
+    // The bias is in view depth (it absorbs depth quantisation only); the face's perspective projection then
+    // turns the biased depth into the window depth the map stores.
+    float biased = max(viewDepth - 1e-3 * f, n);
+    float reference = f * (biased - n) / (biased * (f - n));
+    return texture(uPointShadow, vec4(fromLight, float(i)), reference);
 }
 
 float directionalLightVisibility(int i, vec3 p)
@@ -46,6 +50,5 @@ float directionalLightVisibility(int i, vec3 p)
     vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
     if (any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
         return 1.0;
-    float stored = textureLod(uDirectionalShadow, vec3(coord.xy, float(i)), 0.0).r;
-    return coord.z <= stored + 2e-3 ? 1.0 : 0.0;
+    return texture(uDirectionalShadow, vec4(coord.xy, float(i), coord.z - 2e-3));
 }
