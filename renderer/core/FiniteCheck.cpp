@@ -36,6 +36,7 @@ std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const
     const std::pair<const char*, const gl::Texture*> targets[] = {{"final", &screen.final},
         {"indirect diffuse", &screen.indirectDiffuse},
         {"indirect upsampling guide", &screen.indirectGuide}, {"specular", &screen.specular},
+        {"area-light shadows", &screen.areaShadow}, {"area-light shadow guide", &screen.areaShadowGuide},
         {"specular upsampling guide", &screen.specularGuide}, {"voxel normal", &voxels.normal},
         {"voxel emission", &voxels.emission}, {"voxel accumulators", &voxels.accumulators}};
     for (const auto& [name, texture] : targets)

@@ -133,6 +133,14 @@ struct ScreenTargets {
     gl::Texture specularGuide;   ///< rgba32f: the specular grid's tangent planes, as indirectGuide
     gl::Texture specularStencil; ///< depth24 + stencil8: the specular grid's pixel classes
     gl::Framebuffer specularTarget;
+    /// The area lights' shadow grid (passes/AreaLightPass), width/areaDivisor x height/areaDivisor (rounded up):
+    /// the share of each traced pixel's area-light irradiance its shadow cones let through (rgba16f, a), its
+    /// guide (rgba32f, as indirectGuide), stencil and framebuffer.
+    int areaDivisor = 1;
+    gl::Texture areaShadow;
+    gl::Texture areaShadowGuide;
+    gl::Texture areaShadowStencil;
+    gl::Framebuffer areaShadowTarget;
     gl::Texture final;            ///< rgba32f: linear radiance of the frame.
     gl::Framebuffer finalTarget;  ///< with the g-buffer's depth and stencil, read only</
 };

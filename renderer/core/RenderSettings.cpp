@@ -113,6 +113,7 @@ const std::map<std::string, Field>& fields()
         t["step"] = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
         t["max_distance"] = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
         t["indirect_res"] = makeField(&RenderSettings::indirectDivisor, "trace indirect light at 1/N resolution per axis: 1, 2 or 4");
+        t["area_shadow_res"] = makeField(&RenderSettings::areaShadowDivisor, "trace the area lights' shadow cones at 1/N resolution per axis: 1, 2 or 4");
         t["specular_res"] = makeField(&RenderSettings::specularDivisor, "trace the specular cone at 1/N resolution per axis: 1, 2, 4 or 8");
         t["cone_offset"] = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
         t["direct"] = makeField(&RenderSettings::direct, "direct light (on/off)");
@@ -199,6 +200,8 @@ std::string RenderSettings::validate() const
         return "step must be greater than 0";
     if (indirectDivisor != 1 && indirectDivisor != 2 && indirectDivisor != 4)
         return "indirect_res must be 1, 2 or 4";
+    if (areaShadowDivisor != 1 && areaShadowDivisor != 2 && areaShadowDivisor != 4)
+        return "area_shadow_res must be 1, 2 or 4";
     if (specularDivisor != 1 && specularDivisor != 2 && specularDivisor != 4 && specularDivisor != 8)
         return "specular_res must be 1, 2, 4 or 8";
     if (!(coneOffsetVoxels >= 0.0f))

@@ -8,6 +8,7 @@
 #include "core/ShaderLibrary.h"
 #include "core/VoxelInspector.h"
 #include "gl/DebugOutput.h"
+#include "passes/AreaLightPass.h"
 #include "passes/CompositePass.h"
 #include "passes/ConeTracePass.h"
 #include "passes/GBufferPass.h"
@@ -74,6 +75,7 @@ std::unique_ptr<Pipeline> makePipeline()
     passes.push_back(std::make_unique<GBufferPass>());
     passes.push_back(std::make_unique<VoxelIrradiancePass>());
     passes.push_back(std::make_unique<ConeTracePass>());
+    passes.push_back(std::make_unique<AreaLightPass>());
     passes.push_back(std::make_unique<CompositePass>());
     return std::make_unique<Pipeline>(std::move(passes));
 }
@@ -94,10 +96,12 @@ void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl:
     target.finish(2);
 }
 
-void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int specularDivisor)
+void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int specularDivisor, int areaDivisor)
 {
-    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.specularDivisor == specularDivisor && s.final)
+    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.specularDivisor == specularDivisor
+        && s.areaDivisor == areaDivisor && s.final)
         return;
+    s.areaDivisor = areaDivisor;
     s.width = width;
     s.height = height;
     s.indirectDivisor = divisor;
@@ -111,6 +115,7 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int spec
     s.gbuffer.finish(1);
     makeTracedGrid(width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
     makeTracedGrid(width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
+    makeTracedGrid(width, height, areaDivisor, s.areaShadow, s.areaShadowGuide, s.areaShadowStencil, s.areaShadowTarget);
     s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.finalTarget = gl::Framebuffer::create();
     s.finalTarget.attachColor(0, s.final);
@@ -300,7 +305,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         st.voxels.frame = wanted;
         ++st.versions.staticGeometry;
     }
-    resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor);
+    resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor, m_settings.areaShadowDivisor);
 
     FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
         st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), glm::mat3(1.0f), st.coneSampleCounter.get()};

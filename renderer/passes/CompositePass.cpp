@@ -37,6 +37,8 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
         defines.emplace_back("UPSAMPLE");
     if (frame.screen.specularDivisor > 1)
         defines.emplace_back("SPECULAR_UPSAMPLE");
+    if (frame.screen.areaDivisor > 1)
+        defines.emplace_back("AREA_UPSAMPLE");
     return defines;
 }
 
@@ -51,6 +53,8 @@ void CompositePass::execute(FrameContext& frame)
     s.specular.bindUnit(6);
     s.indirectGuide.bindUnit(7);
     s.specularGuide.bindUnit(10);
+    s.areaShadow.bindUnit(2);
+    s.areaShadowGuide.bindUnit(4);
     s.finalTarget.bind();
     glViewport(0, 0, s.width, s.height);
     const float sky[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -75,6 +79,7 @@ void CompositePass::execute(FrameContext& frame)
         program.set("uPixelToRay", frame.pixelToRay);
         program.set("uDivisor", s.indirectDivisor);
         program.set("uSpecularDivisor", s.specularDivisor);
+        program.set("uAreaDivisor", s.areaDivisor);
         // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
         program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
         program.set("uAreaShadowOffset", frame.settings.coneOffsetVoxels * frame.voxels.frame.voxelSize());

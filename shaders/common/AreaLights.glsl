@@ -127,32 +127,55 @@ float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
     return visibility;
 }
 
-// Irradiance (W/m^2) at p on a surface with normal n from every area light, shadowed. The visibility cone
-// starts `offset` metres along n.
-vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
+// Light i's cosine-weighted solid angle at p above the plane of normal n: its irradiance over its radiance.
+float areaLightFactor(int i, vec3 p, vec3 n)
+{
+    int first = int(texelFetch(uAreaLights, 4 * i).w + 0.5);
+    int count = int(texelFetch(uAreaLights, 4 * i + 2).y + 0.5);
+    float factor = 0.0;
+    for (int k = 0; k < count; ++k) {
+        int base = 4 * kAreaLightCount + 3 * (first + k);
+        vec3 a = texelFetch(uAreaLights, base).xyz - p;
+        vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
+        vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
+        // One-sided: the receiver must be in front of the triangle (its front is counter-clockwise).
+        if (dot(cross(b - a, c - a), -a) <= 0.0)
+            continue;
+        factor += clippedTriangleIrradianceFactor(a, b, c, n);
+    }
+    return factor;
+}
+
+// Irradiance (W/m^2) at p on a surface with normal n from every area light, without shadows.
+vec3 areaLightUnshadowed(vec3 p, vec3 n)
 {
     vec3 irradiance = vec3(0.0);
+    for (int i = 0; i < kAreaLightCount; ++i)
+        irradiance += texelFetch(uAreaLights, 4 * i).rgb * areaLightFactor(i, p, n);
+    return irradiance;
+}
+
+// The same without and with shadows: the visibility cones start `offset` metres along n.
+void areaLightIrradiance(vec3 p, vec3 n, float offset, out vec3 unshadowed, out vec3 shadowed)
+{
+    unshadowed = vec3(0.0);
+    shadowed = vec3(0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
-        vec4 radianceFirst = texelFetch(uAreaLights, 4 * i);
-        vec4 areaCount = texelFetch(uAreaLights, 4 * i + 2);
-        int first = int(radianceFirst.w + 0.5);
-        int count = int(areaCount.y + 0.5);
-        float factor = 0.0;
-        for (int k = 0; k < count; ++k) {
-            int base = 4 * kAreaLightCount + 3 * (first + k);
-            vec3 a = texelFetch(uAreaLights, base).xyz - p;
-            vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
-            vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
-            // One-sided: the receiver must be in front of the triangle (its front is counter-clockwise).
-            if (dot(cross(b - a, c - a), -a) <= 0.0)
-                continue;
-            factor += clippedTriangleIrradianceFactor(a, b, c, n);
-        }
+        float factor = areaLightFactor(i, p, n);
         if (factor <= 0.0)
             continue;
-        irradiance += radianceFirst.rgb * factor * areaLightVisibility(p + n * offset, n, offset, i);
+        vec3 light = texelFetch(uAreaLights, 4 * i).rgb * factor;
+        unshadowed += light;
+        shadowed += light * areaLightVisibility(p + n * offset, n, offset, i);
     }
-    return irradiance;
+}
+
+// The shadowed irradiance alone.
+vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
+{
+    vec3 unshadowed, shadowed;
+    areaLightIrradiance(p, n, offset, unshadowed, shadowed);
+    return shadowed;
 }
 
 // The point of triangle (a, b, c) closest to x (Ericson, Real-Time Collision Detection 5.1.5).
@@ -184,13 +207,13 @@ vec3 closestOnTriangle(vec3 x, vec3 a, vec3 b, vec3 c)
 }
 
 // Radiance the normalised Phong lobe (exponent `shininess` about `mirror`, times the caller's specular colour)
-// reflects from every area light, shadowed. The lobe is taken as a cap of the solid angle that holds its
+// reflects from every area light, shadowed when `shadowed`. The lobe is taken as a cap of the solid angle that holds its
 // peak's worth, 2 pi / (shininess + 2). Of it, a light covers all where the mirror ray meets one of its
 // triangles, and otherwise a share that falls off with the angle to the light's nearest point, over one lobe
 // radius (the light's edge taken as straight); never more than the solid angle the light subtends. An
 // approximation of the lobe integral (a representative point, after Karis 2013; linearly transformed cosines,
 // Heitz et al. 2016, would be exact for polygons).
-vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offset)
+vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offset, bool shadowed)
 {
     vec3 reflected = vec3(0.0);
     float lobeSolidAngle = 2.0 * kAreaPi / (shininess + 2.0);
@@ -228,7 +251,7 @@ vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offse
         float overlap = min(coverage * lobeSolidAngle, solidAngle);
         if (overlap <= 0.0)
             continue;
-        reflected += radianceFirst.rgb * peak * overlap * cosine * areaLightVisibility(p + n * offset, n, offset, i);
+        reflected += radianceFirst.rgb * peak * overlap * cosine * (shadowed ? areaLightVisibility(p + n * offset, n, offset, i) : 1.0);
     }
     return reflected;
 }

@@ -13,6 +13,7 @@
 //   EMISSION  the material emits (PIXEL_EMISSIVE) and emission is on
 //   UPSAMPLE  the diffuse grid is 1/uDivisor of the screen per axis
 //   SPECULAR_UPSAMPLE  the specular grid is 1/uSpecularDivisor of the screen per axis
+//   AREA_UPSAMPLE  the area lights' shadow grid is 1/uAreaDivisor of the screen per axis
 //   VIEW      RenderSettings::view (0 = the final image)
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
@@ -28,12 +29,15 @@ layout(binding = 5) uniform sampler2D uIndirectDiffuse;
 layout(binding = 6) uniform sampler2D uIndirectSpecular; // at the specular grid
 layout(binding = 7) uniform sampler2D uIndirectGuide;    // ScreenTargets::indirectGuide
 layout(binding = 10) uniform sampler2D uSpecularGuide;   // ScreenTargets::specularGuide
+layout(binding = 2) uniform sampler2D uAreaShadow;       // ScreenTargets::areaShadow, at the indirect grid
+layout(binding = 4) uniform sampler2D uAreaShadowGuide;  // ScreenTargets::areaShadowGuide
 
 uniform vec3 uCameraPosition;
 uniform float uShadowOffset; // metres along the normal for shadow lookups
 uniform float uAreaShadowOffset; // metres along the normal where area-light shadow cones start
 uniform int uDivisor;         // the diffuse grid's
 uniform int uSpecularDivisor; // the specular grid's
+uniform int uAreaDivisor;     // the area lights' shadow grid's
 
 #include "composite/Upsampling.glsl"
 
@@ -110,9 +114,17 @@ void main()
     // Area lights: the Lambertian lobe exactly, the glossy lobe approximated (common/AreaLights.glsl). The
     // shadow cone starts where the cones of indirect light do, clear of the surface's own voxels.
     if (kAreaLightCount > 0) {
-        direct += albedo / kPi * areaLightIrradiance(p, n, uAreaShadowOffset);
+        // Exact unshadowed light per pixel, times the share of it the shadow cones let through, traced on a
+        // grid of their own (passes/AreaLightPass) and upsampled like indirect light: cone-traced shadows vary
+        // slowly, the irradiance's own gradient near a light need not.
+#ifdef AREA_UPSAMPLE
+        vec4 areaShadow = upsampled(uAreaShadow, upsamplingTaps(uAreaShadowGuide, uAreaDivisor, pixel, fromCamera, n));
+#else
+        vec4 areaShadow = texelFetch(uAreaShadow, pixel, 0);
+#endif
+        direct += albedo / kPi * areaLightUnshadowed(p, n) * areaShadow.rgb;
 #ifdef GLOSSY
-        direct += specular * areaLightSpecular(p, n, mirror, shininess, uAreaShadowOffset);
+        direct += specular * areaLightSpecular(p, n, mirror, shininess, uAreaShadowOffset, false) * areaShadow.a;
 #endif
     }
 #endif

@@ -78,7 +78,7 @@ private slots:
     void penumbraFollowsThePathTracer();
 
 private:
-    render::RadianceImage renderDirect(const render::Scene& scene);
+    render::RadianceImage renderDirect(const render::Scene& scene, int shadowDivisor = 2);
     test::GlTestContext m_gl;
 };
 
@@ -88,10 +88,11 @@ void AreaLightsTest::initTestCase()
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
 }
 
-render::RadianceImage AreaLightsTest::renderDirect(const render::Scene& scene)
+render::RadianceImage AreaLightsTest::renderDirect(const render::Scene& scene, int shadowDivisor)
 {
     render::RenderSettings settings;
     settings.voxelResolution = 64;
+    settings.areaShadowDivisor = shadowDivisor;
     settings.view = render::DebugView::Direct;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
@@ -151,33 +152,42 @@ void AreaLightsTest::squareLightIrradianceIsExact()
 }
 
 // A blocker halfway: across the shadow, the direct radiance follows the path tracer's (direct light only)
-// within 10% of the unshadowed value, through umbra and penumbra.
+// within 10% of the unshadowed value, through umbra and penumbra, with the shadow cones traced per pixel; on
+// the default grid of one traced pixel in 2 x 2 the upsampling blurs the 96-pixel image's shadow a little
+// more (measured 11.6%), bound 13%.
 void AreaLightsTest::penumbraFollowsThePathTracer()
 {
     const render::Scene scene = lightOverFloor(true);
-    const render::RadianceImage image = renderDirect(scene);
     render::ReferenceSettings settings;
     settings.maxBounces = 1;
     render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize, settings);
     QVERIFY(reference.render(256));
     const render::RadianceImage truth = reference.image();
     const double unshadowed = kAlbedo / glm::pi<double>() * quadratureIrradiance({ 0.0, 0.0, 0.0 });
-    double worst = 0.0;
-    for (int i = 0; i <= 24; ++i) {
-        const float x = -1.2f + 0.1f * float(i);
-        const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, 0.0f }, kSize);
-        // A 3 x 3 mean: the path tracer's noise, not its edge, should not decide.
-        double ours = 0.0, theirs = 0.0;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                ours += image.at(pixel.x + dx, pixel.y + dy).r / 9.0;
-                theirs += truth.at(pixel.x + dx, pixel.y + dy).r / 9.0;
-            }
-        qInfo("x %+.1f: %.4f, path tracer %.4f", double(x), ours, theirs);
-        worst = std::max(worst, std::abs(ours - theirs) / unshadowed);
+    for (const auto& [divisor, bound] : { std::pair { 1, 0.10 }, std::pair { 2, 0.13 } }) {
+        const render::RadianceImage image = renderDirect(scene, divisor);
+        double worst = 0.0;
+        for (int i = 0; i <= 24; ++i) {
+            const float x = -1.2f + 0.1f * float(i);
+            const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, 0.0f }, kSize);
+            // A 3 x 3 mean: the path tracer's noise, not its edge, should not decide.
+            double ours = 0.0, theirs = 0.0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    ours += image.at(pixel.x + dx, pixel.y + dy).r / 9.0;
+                    theirs += truth.at(pixel.x + dx, pixel.y + dy).r / 9.0;
+                }
+            if (divisor == 1)
+                qInfo("x %+.1f: %.4f, path tracer %.4f", double(x), ours, theirs);
+            worst = std::max(worst, std::abs(ours - theirs) / unshadowed);
+        }
+        qInfo("shadow cones on 1 pixel in %d x %d: largest difference across the shadow %.1f%% of the "
+              "unshadowed "
+              "radiance",
+            divisor, divisor, 100.0 * worst);
+        QVERIFY2(
+            worst <= bound, qPrintable(QString("worst %1% of the unshadowed radiance").arg(100.0 * worst)));
     }
-    qInfo("largest difference across the shadow: %.1f%% of the unshadowed radiance", 100.0 * worst);
-    QVERIFY2(worst <= 0.10, qPrintable(QString("worst %1% of the unshadowed radiance").arg(100.0 * worst)));
 }
 
 QTEST_GUILESS_MAIN(AreaLightsTest)

@@ -1,0 +1,50 @@
+#include "passes/AreaLightPass.h"
+
+#include "core/FrameContext.h"
+#include "core/FrameRules.h"
+#include "core/LightUniforms.h"
+
+#include <string>
+
+namespace vct::render {
+
+PassDecision AreaLightPass::plan(const FrameContext& frame)
+{
+    const int lights = FrameRules::areaLightCount(frame);
+    if (lights == 0)
+        return { PassDecision::Action::Skip, "no area lights" };
+    return { PassDecision::Action::Run,
+        "per-frame: " + std::to_string(lights) + " area lights, one traced pixel in "
+            + std::to_string(frame.screen.areaDivisor * frame.screen.areaDivisor) };
+}
+
+void AreaLightPass::execute(FrameContext& frame)
+{
+    const int lights = FrameRules::areaLightCount(frame);
+    gl::Program& program = m_programs[lights];
+    if (!program)
+        program = frame.shaders.build(
+            { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" },
+                { "AREA_LIGHT_COUNT " + std::to_string(lights) } });
+    if (!m_emptyVao)
+        m_emptyVao = gl::VertexArray::create();
+    ScreenTargets& s = frame.screen;
+    s.areaShadowTarget.bind();
+    glViewport(0, 0, s.areaShadow.width(), s.areaShadow.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    program.use();
+    program.set("uDivisor", s.areaDivisor);
+    program.set("uFullSize", glm::ivec3(s.width, s.height, 0));
+    program.set("uCameraPosition", frame.camera.position);
+    program.set("uPixelToRay", frame.pixelToRay);
+    program.set("uAreaShadowOffset", frame.settings.coneOffsetVoxels * frame.voxels.frame.voxelSize());
+    applyAreaLightUniforms(program, frame);
+    s.surface.bindUnit(1);
+    m_emptyVao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace vct::render

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "core/RenderPass.h"
+#include "gl/Program.h"
+#include "gl/VertexArray.h"
+
+namespace vct::render {
+
+/**
+ * The area lights' shadows on a grid of their own (RenderSettings::areaShadowDivisor,
+ * ScreenTargets::areaShadow): for each traced pixel, the share of its unshadowed area-light irradiance its
+ * shadow cones let through, with the pixel's tangent plane as the upsampling guide. The composite then
+ * multiplies each full-resolution pixel's exact unshadowed irradiance by the upsampled share. The shadow
+ * cones are most of an area-lit pixel's cost and what they give varies slowly (a cone-traced penumbra).
+ * Skipped when the scene has no area lights.
+ */
+class AreaLightPass final : public RenderPass {
+public:
+    const char* name() const override { return "area-light shadows"; }
+    PassDeclaration declare() const override
+    {
+        return { { Resource::GBuffer, Resource::VoxelMaterials }, { Resource::IndirectLight } };
+    }
+    PassDecision plan(const FrameContext& frame) override;
+    void execute(FrameContext& frame) override;
+    void invalidate() override { }
+
+private:
+    gl::Program m_programs[17]; ///< by area light count, 1..AreaLightSet::kMaxLights
+    gl::VertexArray m_emptyVao;
+};
+
+} // namespace vct::render
