@@ -127,6 +127,17 @@ float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
     return visibility;
 }
 
+// Triangle k of the table, its corners relative to p; false when its back faces p: emission is one-sided and
+// the front is counter-clockwise.
+bool emittingTriangle(int k, vec3 p, out vec3 a, out vec3 b, out vec3 c)
+{
+    int base = 4 * kAreaLightCount + 3 * k;
+    a = texelFetch(uAreaLights, base).xyz - p;
+    b = texelFetch(uAreaLights, base + 1).xyz - p;
+    c = texelFetch(uAreaLights, base + 2).xyz - p;
+    return dot(cross(b - a, c - a), -a) > 0.0;
+}
+
 // Light i's cosine-weighted solid angle at p above the plane of normal n: its irradiance over its radiance.
 float areaLightFactor(int i, vec3 p, vec3 n)
 {
@@ -134,14 +145,9 @@ float areaLightFactor(int i, vec3 p, vec3 n)
     int count = int(texelFetch(uAreaLights, 4 * i + 2).y + 0.5);
     float factor = 0.0;
     for (int k = 0; k < count; ++k) {
-        int base = 4 * kAreaLightCount + 3 * (first + k);
-        vec3 a = texelFetch(uAreaLights, base).xyz - p;
-        vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
-        vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
-        // One-sided: the receiver must be in front of the triangle (its front is counter-clockwise).
-        if (dot(cross(b - a, c - a), -a) <= 0.0)
-            continue;
-        factor += clippedTriangleIrradianceFactor(a, b, c, n);
+        vec3 a, b, c;
+        if (emittingTriangle(first + k, p, a, b, c))
+            factor += clippedTriangleIrradianceFactor(a, b, c, n);
     }
     return factor;
 }
@@ -227,13 +233,10 @@ vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offse
         float coverage = 0.0;
         float solidAngle = 0.0;
         for (int k = 0; k < count; ++k) {
-            int base = 4 * kAreaLightCount + 3 * (first + k);
-            vec3 a = texelFetch(uAreaLights, base).xyz - p;
-            vec3 b = texelFetch(uAreaLights, base + 1).xyz - p;
-            vec3 c = texelFetch(uAreaLights, base + 2).xyz - p;
+            vec3 a, b, c;
+            if (!emittingTriangle(first + k, p, a, b, c))
+                continue;
             vec3 normal = cross(b - a, c - a);
-            if (dot(normal, -a) <= 0.0)
-                continue; // one-sided: its back faces the receiver
             float twiceArea = length(normal);
             normal /= twiceArea;
             vec3 middle = (a + b + c) / 3.0;
