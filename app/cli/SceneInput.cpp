@@ -54,6 +54,7 @@ bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, cons
         if (!doc::CameraFile::read(cameraPath, setup, error))
             return false;
         view.camera = setup.camera;
+        view.camera.nearPlane = doc::SceneLoader::nearPlaneFor(scene.bounds());
         view.width = setup.width;
         view.height = setup.height;
     }

@@ -54,6 +54,7 @@ bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error
             if (!CameraFile::read(cameraPath, setup, error))
                 return false;
             result.camera = setup.camera;
+            result.camera.nearPlane = nearPlaneFor(result.bounds());
             localInfo.hasCameraFile = true;
             localInfo.width = setup.width;
             localInfo.height = setup.height;
@@ -76,13 +77,19 @@ render::Camera SceneLoader::frameBounds(const render::Aabb& bounds, float fovYDe
     if (bounds.isEmpty())
         return camera;
     const glm::vec3 centre = bounds.center();
-    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+    // Floors only against a point-sized scene: an absolute one near real sizes would break tiny scenes.
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-30f);
     const float distance = radius / std::sin(glm::radians(0.5f * fovYDeg));
     camera.lookAt = centre;
     camera.position = centre + glm::vec3(0.0f, 0.0f, distance);
     camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
-    camera.nearPlane = std::max(1e-3f, 0.01f * (distance - radius));
+    camera.nearPlane = std::max(0.01f * (distance - radius), nearPlaneFor(bounds));
     return camera;
+}
+
+float SceneLoader::nearPlaneFor(const render::Aabb& bounds)
+{
+    return bounds.isEmpty() ? render::Camera{}.nearPlane : std::max(1e-3f * glm::length(bounds.size()), 1e-30f);
 }
 
 } // namespace vct::doc

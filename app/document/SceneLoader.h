@@ -33,6 +33,12 @@ public:
      * fits a vertical field of view of `fovYDeg` degrees (and the horizontal one for aspect ratios >= 1).
      */
     static render::Camera frameBounds(const render::Aabb& bounds, float fovYDeg = kFramingFovYDeg);
+    /**
+     * The near plane for a camera that came without one (camera files have none): a thousandth of the
+     * scene's diagonal, so that a scene in any unit stays beyond it. The default of 0.01 m swallowed a
+     * scene scaled to a fraction of a millimetre whole: both renderers drew black.
+     */
+    static float nearPlaneFor(const render::Aabb& bounds);
 };
 
 } // namespace vct::doc

@@ -27,12 +27,12 @@ void GBufferPass::execute(FrameContext& frame)
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    const glm::mat4 viewProjection = frame.projection * frame.view;
     // Only what the camera can see, nearest first, and solids without the faces they turn away: early depth
     // testing then rejects most hidden fragments before they are shaded.
     // Relative to the eye: the world matrix loses the far plane's precision in a scene far from the origin.
     const Camera& camera = frame.camera;
-    const Frustum view(frame.projection * glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up), camera.position);
+    const glm::mat4 eyeViewProjection = frame.projection * glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up);
+    const Frustum view(eyeViewProjection, camera.position);
     const glm::mat4& p = frame.projection;
     const float nearPlane = p[3][2] / (p[2][2] - 1.0f); // glm::perspective's matrix, solved for its near plane
     const Viewpoint eye{camera.position,
@@ -44,7 +44,7 @@ void GBufferPass::execute(FrameContext& frame)
     }
     options.stencilPixelClass = true;
     for (const bool textured : {false, true}) {
-        m_programs[textured].set("uViewProjection", viewProjection);
+        m_programs[textured].set("uViewProjection", eyeViewProjection);
         m_programs[textured].set("uCameraPosition", camera.position);
         m_programs[textured].set("uCameraForward", glm::normalize(camera.lookAt - camera.position));
         options.materials = [textured](const Material& m) { return (m.albedoTexture >= 0) == textured; };

@@ -27,6 +27,8 @@ struct Aabb {
     }
     glm::vec3 size() const { return isEmpty() ? glm::vec3(0.0f) : max - min; }
     glm::vec3 center() const { return (min + max) * 0.5f; }
+    /** The same box moved by @p offset (empty stays empty). */
+    Aabb translated(const glm::vec3& offset) const { return isEmpty() ? *this : Aabb{min + offset, max + offset}; }
 };
 
 } // namespace vct::render

@@ -4,7 +4,11 @@ layout(location = 2) in vec2 aUv;
 
 uniform mat4 uModel;
 uniform mat4 uNormalMatrix;
+// From coordinates relative to the camera: with the camera's position inside the view matrix, large terms
+// cancel in the projected depth of a scene far from the origin, and with a near plane that suits a small scene
+// every depth came out beyond the far plane (a room 1e5 m out drew nothing).
 uniform mat4 uViewProjection;
+uniform vec3 uCameraPosition;
 
 out vec3 vWorld;
 out vec3 vNormal;
@@ -16,5 +20,5 @@ void main()
     vWorld = world.xyz;
     vNormal = mat3(uNormalMatrix) * aNormal;
     vUv = aUv;
-    gl_Position = uViewProjection * world;
+    gl_Position = uViewProjection * vec4(world.xyz - uCameraPosition, 1.0);
 }
