@@ -1,5 +1,7 @@
 #include "cli/RenderCommand.h"
 
+#include "cli/BlackImageCheck.h"
+
 #include "document/CameraFile.h"
 #include "imageio/ImageFile.h"
 #include "document/LightsFile.h"
@@ -76,6 +78,8 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
         std::printf("check-finite: %llu non-finite channel values in the image (%llu non-finite paths dropped)\n",
             static_cast<unsigned long long>(nonFinite), static_cast<unsigned long long>(stats.nonFiniteSamples));
     }
+    if (const std::string warning = blackImageWarning(image, scene, camera); !warning.empty())
+        std::fprintf(stderr, "vct-render: warning: %s\n", warning.c_str());
     std::string writeError;
     if (!io::ImageFile::write(outPath.toStdString(), image, exposure, &writeError))
         return fail(3, QString::fromStdString(writeError));
@@ -260,6 +264,8 @@ int RenderCommand::run(int argc, char** argv)
         return fail(3, QString::fromUtf8(e.what()));
     }
 
+    if (const std::string warning = blackImageWarning(image, scene, camera); !warning.empty())
+        std::fprintf(stderr, "vct-render: warning: %s\n", warning.c_str());
     std::string writeError;
     if (!io::ImageFile::write(outPath.toStdString(), image, settings.exposure, &writeError))
         return fail(3, QString::fromStdString(writeError));
