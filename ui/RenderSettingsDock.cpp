@@ -151,6 +151,13 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_irradianceCell->setToolTip(tr("Voxels per cache cell: larger cells gather faster and blur more"));
     m_indirectResolution->setToolTip(tr("Cones are traced for one pixel in N×N and upsampled with depth- and "
                                         "normal-aware weights"));
+    m_areaShadowResolution = new QComboBox;
+    m_areaShadowResolution->setObjectName(QStringLiteral("areaShadowResolutionCombo"));
+    m_areaShadowResolution->addItem(tr("Full"), 1);
+    m_areaShadowResolution->addItem(tr("Half"), 2);
+    m_areaShadowResolution->addItem(tr("Quarter"), 4);
+    m_areaShadowResolution->setToolTip(tr("The shadow cones of emissive surfaces (area lights) are traced for one "
+                                          "pixel in N×N and upsampled; their unshadowed light stays exact per pixel"));
     m_specularResolution = new QComboBox;
     m_specularResolution->setObjectName(QStringLiteral("specularResolutionCombo"));
     m_specularResolution->addItem(tr("Full"), 1);
@@ -237,6 +244,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     coneForm->addRow(tr("Cone offset"), m_coneOffset);
     coneForm->addRow(tr("Indirect resolution"), m_indirectResolution);
     coneForm->addRow(tr("Specular resolution"), m_specularResolution);
+    coneForm->addRow(tr("Area shadows"), m_areaShadowResolution);
     coneForm->addRow(m_irradianceCache);
     coneForm->addRow(tr("Cache cell"), m_irradianceCell);
     auto [terms, termForm] = group(tr("Terms"));
@@ -279,6 +287,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     bindCombo(m_bounces, &render::RenderSettings::bounces);
     bindCombo(m_indirectResolution, &render::RenderSettings::indirectDivisor);
     bindCombo(m_specularResolution, &render::RenderSettings::specularDivisor);
+    bindCombo(m_areaShadowResolution, &render::RenderSettings::areaShadowDivisor);
     bindCombo(m_irradianceCell, &render::RenderSettings::irradianceCellSize);
     connect(m_view, &QComboBox::currentIndexChanged, this, [this](int row) {
         if (row < 0)
@@ -418,7 +427,7 @@ void RenderSettingsDock::load()
         return;
     const render::RenderSettings& s = m_document->state().settings;
 
-    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces, m_indirectResolution, m_specularResolution, m_irradianceCache, m_irradianceCell, m_coneCount,
+    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces, m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache, m_irradianceCell, m_coneCount,
         m_diffuseAperture, m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct,
         m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_fast,
         m_balanced, m_high };
@@ -435,6 +444,7 @@ void RenderSettingsDock::load()
     m_irradianceCell->setEnabled(s.irradianceCache);
     selectIntItem(m_indirectResolution, s.indirectDivisor, QStringLiteral("1/") + QString::number(s.indirectDivisor));
     selectIntItem(m_specularResolution, s.specularDivisor, QStringLiteral("1/") + QString::number(s.specularDivisor));
+    selectIntItem(m_areaShadowResolution, s.areaShadowDivisor, QStringLiteral("1/") + QString::number(s.areaShadowDivisor));
     if (m_coneCount->value() != s.diffuseConeCount)
         m_coneCount->setValue(s.diffuseConeCount);
     setSpinValue(m_diffuseAperture, double(s.diffuseApertureDeg));

@@ -61,6 +61,7 @@ private:
     QComboBox* m_bounces = nullptr;
     QComboBox* m_indirectResolution = nullptr;
     QComboBox* m_specularResolution = nullptr;
+    QComboBox* m_areaShadowResolution = nullptr;
     QCheckBox* m_irradianceCache = nullptr;
     QComboBox* m_irradianceCell = nullptr;
     QSpinBox* m_coneCount = nullptr;
