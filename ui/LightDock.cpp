@@ -16,13 +16,15 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace vct::ui {
 
 namespace {
 
 QString intensityUnit(doc::LightType type)
 {
-    return type == doc::LightType::Point ? QStringLiteral(" W/sr") : QStringLiteral(" W/m²");
+    return type == doc::LightType::Directional ? QStringLiteral(" W/m²") : QStringLiteral(" W/sr");
 }
 
 void setSpinValue(QDoubleSpinBox* spin, double value)
@@ -95,9 +97,26 @@ LightDock::LightDock(QWidget* parent)
     m_type->setObjectName(QStringLiteral("lightType"));
     m_type->addItem(tr("Point"), int(doc::LightType::Point));
     m_type->addItem(tr("Directional"), int(doc::LightType::Directional));
+    m_type->addItem(tr("Spot"), int(doc::LightType::Spot));
     m_type->setToolTip(
         tr("Point: radiates from a position (intensity in W/sr).\n"
-           "Directional: parallel rays from infinitely far, like the sun (irradiance in W/m²)."));
+           "Directional: parallel rays from infinitely far, like the sun (irradiance in W/m²).\n"
+           "Spot: a point light sending its intensity (W/sr, on the axis) into a cone, full within the inner "
+           "angle and fading to none at the outer one."));
+    m_spotRow = new QWidget;
+    auto* spotLayout = new QHBoxLayout(m_spotRow);
+    spotLayout->setContentsMargins(0, 0, 0, 0);
+    for (QDoubleSpinBox** spin : {&m_spotInner, &m_spotOuter}) {
+        *spin = new QDoubleSpinBox;
+        (*spin)->setRange(0.0, 90.0);
+        (*spin)->setDecimals(1);
+        (*spin)->setSuffix(QStringLiteral("°"));
+        spotLayout->addWidget(*spin);
+    }
+    m_spotInner->setObjectName(QStringLiteral("spotInner"));
+    m_spotOuter->setObjectName(QStringLiteral("spotOuter"));
+    m_spotInner->setToolTip(tr("Inner angle from the axis: full intensity within it"));
+    m_spotOuter->setToolTip(tr("Outer angle from the axis: no light beyond it (at most 90°)"));
     m_positionRow = makeVectorRow(m_position, -1.0e4, 1.0e4, QStringLiteral(" m"), tr("Position in metres"));
     m_directionRow = makeVectorRow(m_direction, -1.0e3, 1.0e3, QString(),
         tr("The way the light travels (need not be unit length; zero is not allowed)"));
@@ -124,6 +143,8 @@ LightDock::LightDock(QWidget* parent)
     form->addRow(m_positionLabel, m_positionRow);
     m_directionLabel = new QLabel(tr("Direction"));
     form->addRow(m_directionLabel, m_directionRow);
+    m_spotLabel = new QLabel(tr("Cone"));
+    form->addRow(m_spotLabel, m_spotRow);
     form->addRow(tr("Colour"), m_color);
     form->addRow(tr("Intensity"), m_intensity);
     form->addRow(QString(), m_shadows);
@@ -166,6 +187,19 @@ LightDock::LightDock(QWidget* parent)
             });
         });
     }
+    // Inner never beyond outer: editing one carries the other along, as one edit.
+    connect(m_spotInner, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit([&](doc::LightNode& l) {
+            l.spotInnerDeg = float(v);
+            l.spotOuterDeg = std::max(l.spotOuterDeg, l.spotInnerDeg);
+        });
+    });
+    connect(m_spotOuter, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit([&](doc::LightNode& l) {
+            l.spotOuterDeg = float(v);
+            l.spotInnerDeg = std::min(l.spotInnerDeg, l.spotOuterDeg);
+        });
+    });
     connect(m_color, &ColorButton::colorChanged, this,
         [this](const glm::vec3& c) { applyEdit([&](doc::LightNode& l) { l.color = c; }); });
     connect(m_intensity, &QDoubleSpinBox::valueChanged, this,
@@ -280,12 +314,15 @@ void LightDock::loadLight()
     if (!valid) {
         m_directionLabel->hide();
         m_directionRow->hide();
+        m_spotLabel->hide();
+        m_spotRow->hide();
         return;
     }
     const doc::LightNode& l = m_document->state().lights[std::size_t(index)];
-    const bool point = l.type == doc::LightType::Point;
+    const bool point = l.isPointLike();
+    const bool spot = l.type == doc::LightType::Spot;
 
-    const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity);
+    const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity), b5(m_spotInner), b6(m_spotOuter);
     if (!m_name->hasFocus())
         m_name->setText(l.name);
     m_type->setCurrentIndex(m_type->findData(int(l.type)));
@@ -295,8 +332,12 @@ void LightDock::loadLight()
     }
     m_positionLabel->setVisible(point);
     m_positionRow->setVisible(point);
-    m_directionLabel->setVisible(!point);
-    m_directionRow->setVisible(!point);
+    m_directionLabel->setVisible(!point || spot);
+    m_directionRow->setVisible(!point || spot);
+    m_spotLabel->setVisible(spot);
+    m_spotRow->setVisible(spot);
+    setSpinValue(m_spotInner, double(l.spotInnerDeg));
+    setSpinValue(m_spotOuter, double(l.spotOuterDeg));
     m_color->setColor(l.color);
     m_intensity->setSuffix(intensityUnit(l.type));
     setSpinValue(m_intensity, double(l.intensity));

@@ -75,6 +75,10 @@ private:
     std::array<QDoubleSpinBox*, 3> m_direction {};
     ColorButton* m_color = nullptr;
     QDoubleSpinBox* m_intensity = nullptr;
+    QLabel* m_spotLabel = nullptr;
+    QWidget* m_spotRow = nullptr;
+    QDoubleSpinBox* m_spotInner = nullptr; ///< degrees from the axis
+    QDoubleSpinBox* m_spotOuter = nullptr;
     QCheckBox* m_shadows = nullptr;
     bool m_applying = false; ///< True while our own setLight runs: the editors already show the result.
 };

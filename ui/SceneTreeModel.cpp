@@ -17,7 +17,12 @@ constexpr quintptr kLightItem = 1 + SceneTreeModel::LightsGroup;
 
 QString lightTypeName(doc::LightType type)
 {
-    return type == doc::LightType::Point ? SceneTreeModel::tr("Point") : SceneTreeModel::tr("Directional");
+    switch (type) {
+    case doc::LightType::Directional: return SceneTreeModel::tr("Directional");
+    case doc::LightType::Spot: return SceneTreeModel::tr("Spot");
+    case doc::LightType::Point: break;
+    }
+    return SceneTreeModel::tr("Point");
 }
 
 } // namespace
@@ -218,7 +223,7 @@ QVariant SceneTreeModel::lightData(int light, int column, int role) const
         return tr("%1 light, intensity %2 %3%4")
             .arg(lightTypeName(l.type))
             .arg(double(l.intensity))
-            .arg(l.type == doc::LightType::Point ? tr("W/sr") : tr("W/m²"))
+            .arg(l.type == doc::LightType::Directional ? tr("W/m²") : tr("W/sr"))
             .arg(l.castsShadows ? tr(", casts shadows") : QString());
     default:
         return {};

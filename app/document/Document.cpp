@@ -60,11 +60,20 @@ std::vector<LightNode> lightsFromScene(
 {
     std::vector<LightNode> lights;
     int pointNumber = countLights(existing, LightType::Point);
+    int spotNumber = countLights(existing, LightType::Spot);
     for (const render::PointLight& p : scene.pointLights) {
         LightNode l;
         l.id = (*nextId)++;
-        l.name = QStringLiteral("Point light %1").arg(++pointNumber);
-        l.type = LightType::Point;
+        if (p.isSpot()) {
+            l.name = QStringLiteral("Spot light %1").arg(++spotNumber);
+            l.type = LightType::Spot;
+            l.direction = p.spotDirection;
+            l.spotInnerDeg = p.spotInnerDeg;
+            l.spotOuterDeg = p.spotOuterDeg;
+        } else {
+            l.name = QStringLiteral("Point light %1").arg(++pointNumber);
+            l.type = LightType::Point;
+        }
         l.position = p.position;
         splitColor(p.intensity, &l.color, &l.intensity);
         l.castsShadows = p.castsShadows;
@@ -326,9 +335,11 @@ void Document::addLight(const LightNode& light)
 {
     LightNode added = light;
     if (added.name.isEmpty()) {
-        const bool point = added.type == LightType::Point;
+        const QString kind = added.type == LightType::Point ? QStringLiteral("Point")
+            : added.type == LightType::Spot                 ? QStringLiteral("Spot")
+                                                            : QStringLiteral("Directional");
         added.name = QStringLiteral("%1 light %2")
-                         .arg(point ? QStringLiteral("Point") : QStringLiteral("Directional"))
+                         .arg(kind)
                          .arg(countLights(m_state.lights, added.type) + 1);
     }
     m_undoStack.push(new AddLightCommand(this, added));
@@ -424,10 +435,10 @@ render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
             meshToNode->push_back(int(i));
     }
     for (const LightNode& light : m_state.lights) {
-        if (light.type == LightType::Point)
-            scene.pointLights.push_back({light.position, light.color * light.intensity, light.castsShadows});
+        if (light.isPointLike())
+            scene.pointLights.push_back(light.pointLight());
         else
-            scene.directionalLights.push_back({light.direction, light.color * light.intensity, light.castsShadows});
+            scene.directionalLights.push_back(light.directionalLight());
     }
     scene.camera = m_state.camera;
     return scene;

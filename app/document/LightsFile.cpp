@@ -61,7 +61,7 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
                 light, QStringLiteral("shadows"), prefix + QStringLiteral(".shadows"), &castsShadows))
             return failed();
 
-        if (type == QLatin1String("point")) {
+        if (type == QLatin1String("point") || type == QLatin1String("spot")) {
             render::PointLight point;
             point.castsShadows = castsShadows;
             if (!reader.readVec3(
@@ -72,6 +72,26 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
             if (!isNonNegative(point.intensity)) {
                 reader.fail(prefix + QStringLiteral(".intensity"), QStringLiteral("must not be negative"));
                 return failed();
+            }
+            if (type == QLatin1String("spot")) {
+                double inner = 0.0, outer = 0.0;
+                if (!reader.readVec3(light, QStringLiteral("direction"), prefix + QStringLiteral(".direction"),
+                        &point.spotDirection)
+                    || !reader.readNumber(light, QStringLiteral("inner_deg"), prefix + QStringLiteral(".inner_deg"), &inner)
+                    || !reader.readNumber(light, QStringLiteral("outer_deg"), prefix + QStringLiteral(".outer_deg"), &outer))
+                    return failed();
+                if (!(glm::length(point.spotDirection) > 0.0f)) {
+                    reader.fail(prefix + QStringLiteral(".direction"), QStringLiteral("must not be zero"));
+                    return failed();
+                }
+                if (!(inner >= 0.0 && inner <= outer && outer <= 90.0)) {
+                    reader.fail(prefix + QStringLiteral(".outer_deg"),
+                        QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2").arg(inner).arg(outer));
+                    return failed();
+                }
+                point.spotDirection = glm::normalize(point.spotDirection);
+                point.spotInnerDeg = float(inner);
+                point.spotOuterDeg = float(outer);
             }
             points.push_back(point);
         } else if (type == QLatin1String("directional")) {
@@ -93,7 +113,7 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
             directionals.push_back(directional);
         } else {
             reader.fail(prefix + QStringLiteral(".type"),
-                QStringLiteral("unknown light type \"%1\" (expected \"point\" or \"directional\")")
+                QStringLiteral("unknown light type \"%1\" (expected \"point\", \"spot\" or \"directional\")")
                     .arg(type));
             return failed();
         }

@@ -37,7 +37,12 @@ QJsonArray toArray(const glm::vec3& v)
 
 QString lightTypeName(LightType type)
 {
-    return type == LightType::Directional ? QStringLiteral("directional") : QStringLiteral("point");
+    switch (type) {
+    case LightType::Directional: return QStringLiteral("directional");
+    case LightType::Spot: return QStringLiteral("spot");
+    case LightType::Point: break;
+    }
+    return QStringLiteral("point");
 }
 
 /** Deepest nesting of arrays and objects, stopping early once it passes `limit` (no recursion, no parse). */
@@ -247,14 +252,25 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
             l.type = LightType::Point;
         else if (type == QStringLiteral("directional"))
             l.type = LightType::Directional;
+        else if (type == QStringLiteral("spot"))
+            l.type = LightType::Spot;
         else
-            return r.fail(path + "type", QStringLiteral("expected \"point\" or \"directional\", found \"%1\"").arg(type));
+            return r.fail(path + "type",
+                QStringLiteral("expected \"point\", \"spot\" or \"directional\", found \"%1\"").arg(type));
         if (!r.readFiniteVec3(o, "position", path + "position", &l.position)
             || !r.readFiniteVec3(o, "direction", path + "direction", &l.direction)
             || !r.readFiniteVec3(o, "color", path + "color", &l.color)
             || !r.readFloat(o, "intensity", path + "intensity", 0.0f, &l.intensity)
             || !r.readBool(o, "shadows", path + "shadows", &l.castsShadows))
             return false;
+        if (l.type == LightType::Spot) {
+            if (!r.readFloat(o, "inner_deg", path + "inner_deg", 0.0f, &l.spotInnerDeg)
+                || !r.readFloat(o, "outer_deg", path + "outer_deg", 0.0f, &l.spotOuterDeg))
+                return false;
+            if (l.spotOuterDeg > 90.0f || l.spotInnerDeg > l.spotOuterDeg)
+                return r.fail(path + "outer_deg", QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2")
+                                                      .arg(l.spotInnerDeg).arg(l.spotOuterDeg));
+        }
         out.lights.push_back(l);
     }
     return true;
@@ -343,10 +359,16 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
             {"rotation_deg", toArray(n.transform.rotationDeg)}, {"scale", toArray(n.transform.scale)},
             {"dynamic", n.dynamic}, {"visible", n.visible}});
     QJsonArray lights;
-    for (const LightNode& l : state.lights)
-        lights.append(QJsonObject{{"id", qint64(l.id)}, {"name", l.name}, {"type", lightTypeName(l.type)},
+    for (const LightNode& l : state.lights) {
+        QJsonObject light{{"id", qint64(l.id)}, {"name", l.name}, {"type", lightTypeName(l.type)},
             {"position", toArray(l.position)}, {"direction", toArray(l.direction)}, {"color", toArray(l.color)},
-            {"intensity", double(l.intensity)}, {"shadows", l.castsShadows}});
+            {"intensity", double(l.intensity)}, {"shadows", l.castsShadows}};
+        if (l.type == LightType::Spot) {
+            light["inner_deg"] = double(l.spotInnerDeg);
+            light["outer_deg"] = double(l.spotOuterDeg);
+        }
+        lights.append(light);
+    }
     const render::Camera& c = state.camera;
     const QJsonObject camera{{"position", toArray(c.position)}, {"look_at", toArray(c.lookAt)},
         {"up", toArray(c.up)}, {"fov_y_deg", double(c.fovYDeg)}, {"near_plane", double(c.nearPlane)}};

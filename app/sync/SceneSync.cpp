@@ -12,11 +12,10 @@ void applyLights(const doc::DocumentState& state, render::Renderer& renderer)
     std::vector<render::PointLight> points;
     std::vector<render::DirectionalLight> directionals;
     for (const doc::LightNode& light : state.lights) {
-        const glm::vec3 value = light.color * light.intensity;
-        if (light.type == doc::LightType::Point)
-            points.push_back({light.position, value, light.castsShadows});
+        if (light.isPointLike())
+            points.push_back(light.pointLight());
         else
-            directionals.push_back({light.direction, value, light.castsShadows});
+            directionals.push_back(light.directionalLight());
     }
     renderer.setLights(points, directionals);
 }

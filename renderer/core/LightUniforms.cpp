@@ -12,11 +12,12 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
 {
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
-    std::vector<glm::vec4> positions, intensities, directions, irradiances;
+    std::vector<glm::vec4> positions, intensities, spots, directions, irradiances;
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
         positions.emplace_back(light.position, light.castsShadows && shadows.pointDepth ? 1.0f : 0.0f);
-        intensities.emplace_back(light.intensity, 0.0f);
+        intensities.emplace_back(light.intensity, light.cosInner());
+        spots.emplace_back(light.spotDirection, light.cosOuter());
     }
     for (int i = 0; i < directionals; ++i) {
         const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
@@ -29,6 +30,7 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     }
     program.set("uPointLightPosition", positions);
     program.set("uPointLightIntensity", intensities);
+    program.set("uPointLightSpot", spots);
     program.set("uPointShadowNear", shadows.pointNear);
     program.set("uPointShadowFar", shadows.pointFar);
     program.set("uDirectionalLightDirection", directions);

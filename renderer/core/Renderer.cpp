@@ -277,6 +277,7 @@ void Renderer::setLights(const std::vector<PointLight>& points, const std::vecto
     for (std::size_t i = 0; !placementChanged && i < points.size(); ++i)
         placementChanged = points[i].position != old.pointLights[i].position
             || points[i].castsShadows != old.pointLights[i].castsShadows;
+    // A spot's cone changes light values only: its shadow cube map is the same.
     for (std::size_t i = 0; !placementChanged && i < directionals.size(); ++i)
         placementChanged = directionals[i].direction != old.directionalLights[i].direction
             || directionals[i].castsShadows != old.directionalLights[i].castsShadows;

@@ -12,7 +12,8 @@
 #define kPointLightCount POINT_LIGHT_COUNT
 #define kDirectionalLightCount DIRECTIONAL_LIGHT_COUNT
 uniform vec4 uPointLightPosition[MAX_POINT_LIGHTS];  // w = 1 when it casts shadows
-uniform vec4 uPointLightIntensity[MAX_POINT_LIGHTS];
+uniform vec4 uPointLightIntensity[MAX_POINT_LIGHTS]; // w: the cosine of a spot's inner angle (-1: not a spot)
+uniform vec4 uPointLightSpot[MAX_POINT_LIGHTS];      // a spot's axis, w: the cosine of its outer angle (-2: none)
 uniform float uPointShadowNear;
 uniform float uPointShadowFar;
 uniform vec4 uDirectionalLightDirection[MAX_DIRECTIONAL_LIGHTS]; // travel direction, w = shadows
@@ -22,6 +23,18 @@ uniform mat4 uDirectionalLightMatrix[MAX_DIRECTIONAL_LIGHTS];
 // texels' depth tests, so shadow edges are texel-area averages, as a reference image's are, not steps.
 layout(binding = POINT_SHADOW_UNIT) uniform samplerCubeArrayShadow uPointShadow;
 layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DArrayShadow uDirectionalShadow;
+
+// The share of point light i's intensity sent toward p: 1 for an isotropic light; for a spot, a smoothstep in
+// the cosine from its outer to its inner angle (scene/PointLight.h::spotFactor, the same function).
+float spotFactor(int i, vec3 p)
+{
+    float outer = uPointLightSpot[i].w, inner = uPointLightIntensity[i].w;
+    float c = dot(normalize(p - uPointLightPosition[i].xyz), uPointLightSpot[i].xyz);
+    if (inner - outer <= 1e-6)
+        return c >= outer ? 1.0 : 0.0;
+    float t = clamp((c - outer) / (inner - outer), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
 
 // p is already pushed off the surface by the caller; the bias absorbs depth quantisation only.
 float pointLightVisibility(int i, vec3 p)

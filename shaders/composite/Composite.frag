@@ -94,7 +94,8 @@ void main()
         float distance2 = max(dot(d, d), uPointShadowNear * uPointShadowNear);
         vec3 toLight = normalize(d);
         float cosTheta = max(dot(n, toLight), 0.0);
-        vec3 irradiance = uPointLightIntensity[i].rgb / distance2 * pointLightVisibility(i, p + n * uShadowOffset) * cosTheta;
+        vec3 irradiance = uPointLightIntensity[i].rgb * spotFactor(i, p) / distance2
+            * pointLightVisibility(i, p + n * uShadowOffset) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY // normalised modified Phong
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);

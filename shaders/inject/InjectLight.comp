@@ -51,7 +51,8 @@ void main()
             vec3 toLight = normalize(d);
             vec3 facing = facingLight(n, normalLength, toLight);
             float visibility = pointLightVisibility(i, p + facing * uVoxelSize);
-            radiance += albedo.rgb / kPi * uPointLightIntensity[i].rgb / distance2 * visibility * max(dot(facing, toLight), 0.0);
+            radiance += albedo.rgb / kPi * uPointLightIntensity[i].rgb * spotFactor(i, p) / distance2 * visibility
+                * max(dot(facing, toLight), 0.0);
         }
         for (int i = 0; i < kDirectionalLightCount; ++i) {
             vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);

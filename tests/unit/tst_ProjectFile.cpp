@@ -256,7 +256,7 @@ private slots:
         QTest::newRow("light type") << edited([](QJsonObject& o) {
             QJsonArray lights = o.value("lights").toArray();
             QJsonObject light = lights[0].toObject();
-            light.insert("type", "spot");
+            light.insert("type", "laser");
             lights[0] = light;
             o.insert("lights", lights);
         }) << QStringLiteral("lights[0].type");

@@ -548,7 +548,7 @@ void TestSceneLoading::lightsFileErrorsNameTheField()
     const Case cases[] = {
         { R"({"lights": [{"type": "point", "position": [0,1,0], "intensity": [1,1,1]}, {"type": 7}]})",
             "lights[1].type" },
-        { R"({"lights": [{"type": "spot", "position": [0,1,0], "intensity": [1,1,1]}]})", "lights[0].type" },
+        { R"({"lights": [{"type": "laser", "position": [0,1,0], "intensity": [1,1,1]}]})", "lights[0].type" },
         { R"({"lights": [{"type": "point", "position": [0,1,0], "intensity": [1,"x",1]}]})",
             "lights[0].intensity" },
         { R"({"lights": [{"type": "directional", "direction": [0,0,0], "irradiance": [1,1,1]}]})",
