@@ -7,8 +7,8 @@
 
 #include <QCoreApplication>
 #include <QCursor>
-#include <QDir>
 #include <QDateTime>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -32,7 +32,8 @@ void fitLogAxis(QLogValueAxis* axis, double lo, double hi)
         axis->setRange(1.0, 10.0);
         return;
     }
-    axis->setRange(std::pow(10.0, std::floor(std::log10(lo / 1.5))), std::pow(10.0, std::ceil(std::log10(hi * 1.5))));
+    axis->setRange(
+        std::pow(10.0, std::floor(std::log10(lo / 1.5))), std::pow(10.0, std::ceil(std::log10(hi * 1.5))));
 }
 
 } // namespace
@@ -65,7 +66,7 @@ AccuracyChartDock::AccuracyChartDock(QWidget* parent)
     m_errorAxis->setMinorTickCount(-1);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
     m_chart->addAxis(m_errorAxis, Qt::AlignLeft);
-    for (QScatterSeries* series : {m_vct, m_reference}) {
+    for (QScatterSeries* series : { m_vct, m_reference }) {
         series->attachAxis(m_timeAxis);
         series->attachAxis(m_errorAxis);
     }
@@ -147,8 +148,9 @@ void AccuracyChartDock::plot()
     const bool empty = m_results.points().empty();
     fitLogAxis(m_timeAxis, empty ? 0.0 : timeLo, timeHi);
     fitLogAxis(m_errorAxis, empty ? 0.0 : errorLo, errorHi);
-    m_chart->setTitle(
-        m_path.isEmpty() ? tr("Error against time") : tr("Error against time: %1").arg(QFileInfo(QFileInfo(m_path).path()).fileName()));
+    m_chart->setTitle(m_path.isEmpty()
+            ? tr("Error against time")
+            : tr("Error against time: %1").arg(QFileInfo(QFileInfo(m_path).path()).fileName()));
 }
 
 void AccuracyChartDock::showPointTip(bool reference, const QPointF& point, bool hovered)
@@ -183,7 +185,8 @@ void AccuracyChartDock::showPointTip(bool reference, const QPointF& point, bool 
 void AccuracyChartDock::showEvent(QShowEvent* event)
 {
     QDockWidget::showEvent(event);
-    // Looked for on first show rather than at start-up: the dock starts hidden and most sessions never open it.
+    // Looked for on first show rather than at start-up: the dock starts hidden and most sessions never open
+    // it.
     if (m_triedDefault || !m_path.isEmpty())
         return;
     m_triedDefault = true;

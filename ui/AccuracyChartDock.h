@@ -28,8 +28,8 @@ public:
     /** Loads and plots a results.csv; on failure keeps the current chart and returns false with @p error. */
     bool loadCsv(const QString& path, QString* error = nullptr);
     /**
-     * The newest docs/accuracy/ * /results.csv under the source tree ($VCT_SOURCE_DIR, the working directory or
-     * a parent of the executable's folder), or an empty string.
+     * The newest docs/accuracy/ * /results.csv under the source tree ($VCT_SOURCE_DIR, the working directory
+     * or a parent of the executable's folder), or an empty string.
      */
     static QString findDefaultSweep();
 

@@ -29,9 +29,11 @@ render::Camera CameraController::orbit(const render::Camera& camera, float yawDe
     offset = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(-yawDeg), up) * glm::vec4(offset, 0.0f));
     const glm::vec3 right = glm::normalize(glm::cross(up, offset));
     // Keep away from the poles so the view never flips over.
-    const float currentPitch = glm::degrees(std::asin(std::clamp(glm::dot(offset / distance, up), -1.0f, 1.0f)));
+    const float currentPitch
+        = glm::degrees(std::asin(std::clamp(glm::dot(offset / distance, up), -1.0f, 1.0f)));
     const float newPitch = std::clamp(currentPitch + pitchDeg, -88.0f, 88.0f);
-    offset = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(newPitch - currentPitch), -right) * glm::vec4(offset, 0.0f));
+    offset = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(newPitch - currentPitch), -right)
+        * glm::vec4(offset, 0.0f));
     result.position = camera.lookAt + offset;
     return result;
 }

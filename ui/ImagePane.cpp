@@ -53,8 +53,8 @@ void ImagePane::paintEvent(QPaintEvent*)
         painter.drawImage(target, m_image);
     }
     painter.setPen(palette().color(QPalette::WindowText));
-    painter.drawText(QRect(0, area.bottom() + 1, width(), textHeight), Qt::AlignHCenter | Qt::AlignVCenter,
-        m_caption);
+    painter.drawText(
+        QRect(0, area.bottom() + 1, width(), textHeight), Qt::AlignHCenter | Qt::AlignVCenter, m_caption);
 }
 
 } // namespace vct::ui

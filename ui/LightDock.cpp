@@ -106,7 +106,7 @@ LightDock::LightDock(QWidget* parent)
     m_spotRow = new QWidget;
     auto* spotLayout = new QHBoxLayout(m_spotRow);
     spotLayout->setContentsMargins(0, 0, 0, 0);
-    for (QDoubleSpinBox** spin : {&m_spotInner, &m_spotOuter}) {
+    for (QDoubleSpinBox** spin : { &m_spotInner, &m_spotOuter }) {
         *spin = new QDoubleSpinBox;
         (*spin)->setRange(0.0, 90.0);
         (*spin)->setDecimals(1);
@@ -322,7 +322,8 @@ void LightDock::loadLight()
     const bool point = l.isPointLike();
     const bool spot = l.type == doc::LightType::Spot;
 
-    const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity), b5(m_spotInner), b6(m_spotOuter);
+    const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity), b5(m_spotInner),
+        b6(m_spotOuter);
     if (!m_name->hasFocus())
         m_name->setText(l.name);
     m_type->setCurrentIndex(m_type->findData(int(l.type)));

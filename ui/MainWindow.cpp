@@ -17,23 +17,23 @@
 #include "imageio/ImageFile.h"
 
 #include <QAction>
-#include <QFutureWatcher>
-#include <QProgressDialog>
-#include <QtConcurrent/QtConcurrentRun>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFutureWatcher>
 #include <QGuiApplication>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressDialog>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 
@@ -43,11 +43,13 @@ namespace {
 
 constexpr int kMaxRecentFiles = 8;
 const QString kProjectFilter = QStringLiteral("VCT Studio projects (*.vctproj)");
-const QString kModelFilter = QStringLiteral("Models (*.obj *.gltf *.glb *.ply *.fbx *.dae *.3ds *.stl);;All files (*)");
+const QString kModelFilter
+    = QStringLiteral("Models (*.obj *.gltf *.glb *.ply *.fbx *.dae *.3ds *.stl);;All files (*)");
 
 bool isModelFile(const QString& path)
 {
-    static const QStringList extensions = {"obj", "gltf", "glb", "ply", "fbx", "dae", "3ds", "stl", "blend", "x3d"};
+    static const QStringList extensions
+        = { "obj", "gltf", "glb", "ply", "fbx", "dae", "3ds", "stl", "blend", "x3d" };
     return extensions.contains(QFileInfo(path).suffix().toLower());
 }
 
@@ -76,9 +78,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_document, &doc::Document::filePathChanged, this, &MainWindow::updateTitle);
-    connect(m_viewport, &ViewportWidget::rendererFailed, this, [this](const QString& message) {
-        statusBar()->showMessage(tr("Renderer error: %1").arg(message));
-    });
+    connect(m_viewport, &ViewportWidget::rendererFailed, this,
+        [this](const QString& message) { statusBar()->showMessage(tr("Renderer error: %1").arg(message)); });
     m_autosaveTimer.setInterval(60 * 1000);
     connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
     m_autosaveTimer.start();
@@ -127,7 +128,9 @@ void MainWindow::buildDocks()
     m_compareDock->hide();
     m_accuracyDock->hide();
     m_compareDock->setFrameSource(
-        [this] { return double(std::max(1, m_viewport->width())) / double(std::max(1, m_viewport->height())); },
+        [this] {
+            return double(std::max(1, m_viewport->width())) / double(std::max(1, m_viewport->height()));
+        },
         [this](int width, int height, double& gpuMs) {
             render::FrameStats stats;
             render::RadianceImage image = m_viewport->renderFullFrame(width, height, &stats);
@@ -157,7 +160,8 @@ void MainWindow::buildMenus()
     file->addAction(tr("&Open project..."), QKeySequence::Open, this, [this] {
         if (!maybeSave())
             return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QString(), kProjectFilter);
+        const QString path
+            = QFileDialog::getOpenFileName(this, tr("Open project"), QString(), kProjectFilter);
         if (!path.isEmpty())
             openProject(path);
     });
@@ -172,7 +176,8 @@ void MainWindow::buildMenus()
             importModel(path);
     });
     file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QStringLiteral("render.png"),
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export image"),
+            QStringLiteral("render.png"),
             tr("PNG, tone-mapped (*.png);;PFM, linear radiance (*.pfm);;OpenEXR, linear radiance (*.exr)"));
         if (!path.isEmpty())
             exportImage(path);
@@ -189,24 +194,28 @@ void MainWindow::buildMenus()
     edit->addAction(redo);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_materialDock),
-             static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
-             static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock),
-             static_cast<QDockWidget*>(m_compareDock), static_cast<QDockWidget*>(m_accuracyDock)})
+    for (QDockWidget* dock :
+        { static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_materialDock),
+            static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
+            static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock),
+            static_cast<QDockWidget*>(m_compareDock), static_cast<QDockWidget*>(m_accuracyDock) })
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addSeparator();
-    m_viewMenu->addAction(tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
+    m_viewMenu->addAction(
+        tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
     QAction* nonFinite = m_viewMenu->addAction(tr("Check for &NaN/Inf"));
     nonFinite->setObjectName(QStringLiteral("nonFiniteCheckAction"));
     nonFinite->setCheckable(true);
-    nonFinite->setToolTip(tr("Counts non-finite texels in every render target and voxel level after each frame"));
+    nonFinite->setToolTip(
+        tr("Counts non-finite texels in every render target and voxel level after each frame"));
     connect(nonFinite, &QAction::toggled, m_viewport, &ViewportWidget::setNonFiniteCheck);
 
     QMenu* renderMenu = menuBar()->addMenu(tr("&Render"));
     QAction* compare = renderMenu->addAction(tr("&Compare with reference"));
     compare->setObjectName(QStringLiteral("compareReferenceAction"));
     compare->setShortcut(QKeySequence(tr("Ctrl+R")));
-    compare->setToolTip(tr("Path-trace the current view in the background and compare the cone-traced image with it"));
+    compare->setToolTip(
+        tr("Path-trace the current view in the background and compare the cone-traced image with it"));
     connect(compare, &QAction::triggered, this, [this] {
         m_compareDock->show();
         m_compareDock->raise();
@@ -245,16 +254,19 @@ bool MainWindow::recoverAutosave()
 {
     QString error;
     if (!m_document->recoverProject(recoveryPath(), &error)) {
-        // Kept aside, not deleted: what it holds may still be read by hand; the next start does not offer it again.
+        // Kept aside, not deleted: what it holds may still be read by hand; the next start does not offer it
+        // again.
         const QString kept = recoveryPath() + QStringLiteral(".failed-")
             + QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"));
         QFile::remove(kept);
         const bool moved = QFile::rename(recoveryPath(), kept);
         showError(tr("Recovery failed"),
-            moved ? tr("%1 (the autosaved copy is kept as %2)").arg(error, QDir::toNativeSeparators(kept)) : error);
+            moved ? tr("%1 (the autosaved copy is kept as %2)").arg(error, QDir::toNativeSeparators(kept))
+                  : error);
         return false;
     }
-    statusBar()->showMessage(tr("Recovered the autosaved document: it is untitled until you save it (Ctrl+S)."));
+    statusBar()->showMessage(
+        tr("Recovered the autosaved document: it is untitled until you save it (Ctrl+S)."));
     return true;
 }
 
@@ -288,7 +300,8 @@ bool MainWindow::save()
 
 bool MainWindow::saveAs()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save project"), m_document->filePath(), kProjectFilter);
+    QString path
+        = QFileDialog::getSaveFileName(this, tr("Save project"), m_document->filePath(), kProjectFilter);
     if (path.isEmpty())
         return false;
     if (!path.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive))
@@ -341,11 +354,13 @@ bool MainWindow::importModel(const QString& path)
 bool MainWindow::exportImage(const QString& path)
 {
     const qreal dpr = m_viewport->devicePixelRatioF();
-    const render::RadianceImage image = m_viewport->renderFullFrame(
-        int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
+    const render::RadianceImage image
+        = m_viewport->renderFullFrame(int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
     std::string error;
-    if (image.isEmpty() || !io::ImageFile::write(path.toStdString(), image, m_document->state().settings.exposure, &error)) {
-        showError(tr("Export image"), image.isEmpty() ? tr("nothing has been rendered yet") : QString::fromStdString(error));
+    if (image.isEmpty()
+        || !io::ImageFile::write(path.toStdString(), image, m_document->state().settings.exposure, &error)) {
+        showError(tr("Export image"),
+            image.isEmpty() ? tr("nothing has been rendered yet") : QString::fromStdString(error));
         return false;
     }
     statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
@@ -381,7 +396,8 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 {
     for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile() && (isModelFile(url.toLocalFile()) || url.toLocalFile().endsWith(QStringLiteral(".vctproj")))) {
+        if (url.isLocalFile()
+            && (isModelFile(url.toLocalFile()) || url.toLocalFile().endsWith(QStringLiteral(".vctproj")))) {
             event->acceptProposedAction();
             return;
         }
@@ -427,19 +443,24 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->clear();
     QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
     // A file deleted or moved since is no way back to the work: leave it out rather than fail on a click.
-    files.erase(std::remove_if(files.begin(), files.end(), [](const QString& path) { return !QFileInfo::exists(path); }),
+    files.erase(std::remove_if(
+                    files.begin(), files.end(), [](const QString& path) { return !QFileInfo::exists(path); }),
         files.end());
     for (const QString& path : files)
-        m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
-            if (maybeSave())
-                openProject(path);
-        })->setToolTip(path);
+        m_recentMenu
+            ->addAction(QFileInfo(path).fileName(), this,
+                [this, path] {
+                    if (maybeSave())
+                        openProject(path);
+                })
+            ->setToolTip(path);
     m_recentMenu->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::updateTitle()
 {
-    const QString name = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
+    const QString name
+        = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
     setWindowTitle(tr("%1[*] - VCT Studio").arg(name));
     setWindowModified(m_document->isModified());
 }

@@ -53,7 +53,8 @@ public:
      * work is saved elsewhere or the user discards it on closing, so a second crash loses nothing either.
      */
     bool recoverAutosave();
-    /** Writes the recovery copy now if the document has unsaved changes (the timer calls this every minute). */
+    /** Writes the recovery copy now if the document has unsaved changes (the timer calls this every minute).
+     */
     void autosave();
 
     bool openProject(const QString& path);

@@ -79,8 +79,9 @@ MaterialDock::MaterialDock(QWidget* parent)
 
     m_doubleSided = new QCheckBox(tr("Double-sided"));
     m_doubleSided->setObjectName(QStringLiteral("doubleSidedCheck"));
-    m_doubleSided->setToolTip(tr("Seen from both sides. Off: front faces only; back faces are left out of the "
-                                 "image and of shadows, which draws closed models faster"));
+    m_doubleSided->setToolTip(
+        tr("Seen from both sides. Off: front faces only; back faces are left out of the "
+           "image and of shadows, which draws closed models faster"));
     m_emissive = new QCheckBox(tr("Emissive"));
     m_emissive->setObjectName(QStringLiteral("emissiveCheck"));
     m_emissive->setToolTip(tr("Emits light from the front face: radiance = colour × strength"));
@@ -262,8 +263,8 @@ void MaterialDock::loadMaterial()
 {
     const bool valid
         = m_document && m_material >= 0 && m_material < int(m_document->state().materials.size());
-    for (QWidget* w : std::initializer_list<QWidget*> {
-             m_albedo, m_texture, m_emissive, m_emissionColor, m_strength, m_specular, m_shininess, m_doubleSided })
+    for (QWidget* w : std::initializer_list<QWidget*> { m_albedo, m_texture, m_emissive, m_emissionColor,
+             m_strength, m_specular, m_shininess, m_doubleSided })
         w->setEnabled(valid);
     if (!valid) {
         m_texture->setText(tr("—"));

@@ -96,8 +96,9 @@ ReferenceCompareDock::ReferenceCompareDock(QWidget* parent)
     m_referencePane->setObjectName(QStringLiteral("compareReferencePane"));
     m_heatmapPane = new ImagePane(tr("Relative error"), body);
     m_heatmapPane->setObjectName(QStringLiteral("compareHeatmapPane"));
-    m_heatmapPane->setToolTip(tr("Per-pixel relative error: black 0, blue 25%, green 50%, yellow 75%, red 100% "
-                                 "or more; magenta where a value is not finite"));
+    m_heatmapPane->setToolTip(
+        tr("Per-pixel relative error: black 0, blue 25%, green 50%, yellow 75%, red 100% "
+           "or more; magenta where a value is not finite"));
     auto* images = new QHBoxLayout;
     images->addWidget(m_vctPane);
     images->addWidget(m_referencePane);
@@ -120,9 +121,11 @@ ReferenceCompareDock::ReferenceCompareDock(QWidget* parent)
     form->addRow(tr("Elapsed"), m_elapsed);
     form->addRow(tr("VCT frame"), m_gpu);
     form->addRow(tr("Size"), m_size);
-    form->labelForField(m_relMse)->setToolTip(tr("Mean of (vct - ref)² / (ref² + 0.01) over pixels and channels"));
+    form->labelForField(m_relMse)->setToolTip(
+        tr("Mean of (vct - ref)² / (ref² + 0.01) over pixels and channels"));
     form->labelForField(m_psnr)->setToolTip(tr("On linear radiance, full scale = radiance 1"));
-    form->labelForField(m_ssim)->setToolTip(tr("Structural similarity of the tone-mapped images (1 = identical)"));
+    form->labelForField(m_ssim)->setToolTip(
+        tr("Structural similarity of the tone-mapped images (1 = identical)"));
     form->labelForField(m_gpu)->setToolTip(
         tr("GPU time of the cone-traced frame; passes the renderer reused from its cache add nothing"));
 
@@ -133,7 +136,8 @@ ReferenceCompareDock::ReferenceCompareDock(QWidget* parent)
     m_status = new QLabel(tr("Ctrl+R compares the current view with a path-traced reference."), body);
     m_status->setObjectName(QStringLiteral("compareStatusLabel"));
     m_status->setWordWrap(true);
-    m_staleLabel = new QLabel(tr("Stale: the scene or the view changed after this comparison started."), body);
+    m_staleLabel
+        = new QLabel(tr("Stale: the scene or the view changed after this comparison started."), body);
     m_staleLabel->setObjectName(QStringLiteral("compareStaleLabel"));
     m_staleLabel->setStyleSheet(QStringLiteral("color: #c07000; font-weight: bold"));
     m_staleLabel->setVisible(false);
@@ -215,7 +219,7 @@ void ReferenceCompareDock::startComparison()
     m_vct = std::move(vct);
     m_vctGpuMs = gpuMs;
     m_exposure = request.exposure;
-    m_last = ReferenceUpdate{};
+    m_last = ReferenceUpdate {};
     m_vctPane->setImage(toDisplay(m_vct, io::ToneMapper(m_exposure)));
     m_referencePane->setImage({});
     m_heatmapPane->setImage({});
@@ -286,7 +290,8 @@ void ReferenceCompareDock::onFinished(int jobId, bool completed, int samplesPerP
         m_progress->setValue(m_progress->maximum());
         m_status->setText(tr("Done: %1 spp in %2.").arg(samplesPerPixel).arg(elapsed));
     } else if (samplesPerPixel > 0) {
-        m_status->setText(tr("Cancelled at %1 spp; the last finished pass stays shown.").arg(samplesPerPixel));
+        m_status->setText(
+            tr("Cancelled at %1 spp; the last finished pass stays shown.").arg(samplesPerPixel));
     } else {
         m_status->setText(tr("Cancelled before the first pass finished."));
     }
@@ -317,7 +322,7 @@ void ReferenceCompareDock::setStale(bool stale)
 
 void ReferenceCompareDock::clearNumbers()
 {
-    for (QLabel* label : {m_relMse, m_rmse, m_psnr, m_ssim, m_elapsed, m_gpu, m_size})
+    for (QLabel* label : { m_relMse, m_rmse, m_psnr, m_ssim, m_elapsed, m_gpu, m_size })
         label->setText(QStringLiteral("—"));
     m_spp->setText(tr("0 of %1 spp").arg(m_targetSpp->value()));
 }

@@ -18,7 +18,7 @@ class QSpinBox;
 namespace vct::doc {
 class Document;
 struct ChangeEvent;
-}
+} // namespace vct::doc
 
 namespace vct::ui {
 
@@ -27,8 +27,8 @@ class ReferenceJob;
 
 /**
  * "Compare with reference": renders the cone-traced image of the current view at a comparison size, runs the
- * CPU path tracer on the same scene and camera in the background, pass after pass (4 spp, then doubling up to a
- * target), and after each pass shows VCT | reference | error heatmap side by side with relative MSE, RMSE,
+ * CPU path tracer on the same scene and camera in the background, pass after pass (4 spp, then doubling up to
+ * a target), and after each pass shows VCT | reference | error heatmap side by side with relative MSE, RMSE,
  * PSNR, SSIM, samples so far and time. Cancel keeps the last finished pass on screen; starting again cancels
  * the running job first.
  *
@@ -44,8 +44,8 @@ class ReferenceCompareDock : public QDockWidget {
 public:
     /**
      * Renders the current view with the cone tracer at @p width x @p height pixels and returns its linear
-     * radiance, or an empty image when nothing can render yet; sets @p gpuMs to the frame's GPU time in ms, or
-     * leaves it negative when unknown. Called on the GUI thread.
+     * radiance, or an empty image when nothing can render yet; sets @p gpuMs to the frame's GPU time in ms,
+     * or leaves it negative when unknown. Called on the GUI thread.
      */
     using FrameRenderer = std::function<render::RadianceImage(int width, int height, double& gpuMs)>;
     /** The current view's aspect ratio, width / height (> 0). */

@@ -28,11 +28,12 @@ int ReferenceJob::start(ReferenceRequest request)
     reapFinished();
     const int jobId = ++m_jobId;
     auto done = std::make_shared<std::atomic<bool>>(false);
-    m_workers.push_back({std::jthread([this, jobId, done, request = std::move(request)](std::stop_token stop) {
-        run(jobId, request, stop);
-        done->store(true);
-    }),
-        done});
+    m_workers.push_back(
+        { std::jthread([this, jobId, done, request = std::move(request)](std::stop_token stop) {
+             run(jobId, request, stop);
+             done->store(true);
+         }),
+            done });
     return jobId;
 }
 
@@ -52,14 +53,14 @@ void ReferenceJob::run(int jobId, const ReferenceRequest& request, std::stop_tok
     const auto start = std::chrono::steady_clock::now();
     const render::RadianceImage& vct = request.vctImage;
     try {
-        render::ReferenceRenderer renderer(request.scene, request.camera, vct.width, vct.height, request.settings);
+        render::ReferenceRenderer renderer(
+            request.scene, request.camera, vct.width, vct.height, request.settings);
         const int target = std::max(1, request.targetSpp);
         while (renderer.samplesPerPixel() < target && !stop.stop_requested()) {
             const int done = renderer.samplesPerPixel();
             const int pass = std::min(std::max(std::max(1, request.firstPassSpp), done), target - done);
-            const bool complete = renderer.render(pass, [&](double fraction) {
-                emit progress(jobId, done, pass, fraction);
-            }, stop);
+            const bool complete = renderer.render(
+                pass, [&](double fraction) { emit progress(jobId, done, pass, fraction); }, stop);
             if (!complete)
                 break;
 

@@ -14,14 +14,14 @@
 namespace vct::ui {
 
 /**
- * Runs the CPU path tracer (render::ReferenceRenderer) for one ReferenceRequest on a worker thread, pass after
- * pass, and reports each pass through queued signals; the GUI thread never waits for it.
+ * Runs the CPU path tracer (render::ReferenceRenderer) for one ReferenceRequest on a worker thread, pass
+ * after pass, and reports each pass through queued signals; the GUI thread never waits for it.
  *
  * Every run gets a job id that all its signals carry. start() and cancel() only ask the running job to stop
  * (std::stop_token) and never join it, because the renderer checks the token between rows but building the
- * scene or scoring a pass cannot be interrupted; a stopped job finishes in the background and its late signals
- * carry an old id, which receivers ignore (compare with currentJobId()). The destructor stops and joins every
- * job, so no worker outlives the object whose signals it emits.
+ * scene or scoring a pass cannot be interrupted; a stopped job finishes in the background and its late
+ * signals carry an old id, which receivers ignore (compare with currentJobId()). The destructor stops and
+ * joins every job, so no worker outlives the object whose signals it emits.
  */
 class ReferenceJob : public QObject {
     Q_OBJECT

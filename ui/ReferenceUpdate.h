@@ -11,8 +11,8 @@ namespace vct::ui {
 struct ReferenceUpdate {
     int jobId = 0;
     render::RadianceImage reference; ///< Mean radiance so far, W/(m^2 sr).
-    render::RadianceImage heatmap;   ///< ImageMetrics::errorHeatmap(vct, reference): display values in [0, 1].
-    int samplesPerPixel = 0;         ///< Samples in @c reference so far.
+    render::RadianceImage heatmap; ///< ImageMetrics::errorHeatmap(vct, reference): display values in [0, 1].
+    int samplesPerPixel = 0; ///< Samples in @c reference so far.
     int targetSpp = 0;
     double seconds = 0.0; ///< Wall clock since the job started, scene build included.
     double relativeMse = 0.0;

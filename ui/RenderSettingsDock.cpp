@@ -132,21 +132,23 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_bounces->addItem(tr("1 (one gathered)"), 1);
     m_bounces->addItem(tr("2"), 2);
     m_bounces->addItem(tr("4"), 4);
-    m_bounces->setToolTip(tr("Light bounces the voxels carry. Converged iterates until the light settles (the view "
-                             "keeps refining while idle; the stats panel shows the iterations), as a closed room "
-                             "needs; each iteration gathers once per occupied cell when the lighting changes"));
+    m_bounces->setToolTip(
+        tr("Light bounces the voxels carry. Converged iterates until the light settles (the view "
+           "keeps refining while idle; the stats panel shows the iterations), as a closed room "
+           "needs; each iteration gathers once per occupied cell when the lighting changes"));
     m_indirectResolution = new QComboBox;
     m_indirectResolution->setObjectName(QStringLiteral("indirectResolutionCombo"));
     m_indirectResolution->addItem(tr("Full"), 1);
     m_indirectResolution->addItem(tr("Half"), 2);
     m_indirectResolution->addItem(tr("Quarter"), 4);
     m_irradianceCache = makeCheck(tr("Irradiance cache"),
-        tr("Gather the diffuse cones once per surface cell when the light changes, and look them up per pixel: "
+        tr("Gather the diffuse cones once per surface cell when the light changes, and look them up per "
+           "pixel: "
            "camera moves trace no diffuse cones; light edits cost a gather over the whole grid"));
     m_irradianceCache->setObjectName(QStringLiteral("irradianceCacheCheck"));
     m_irradianceCell = new QComboBox;
     m_irradianceCell->setObjectName(QStringLiteral("irradianceCellCombo"));
-    for (int cell : {1, 2, 4})
+    for (int cell : { 1, 2, 4 })
         m_irradianceCell->addItem(QString::number(cell) + QStringLiteral("³ ") + tr("voxels"), cell);
     m_irradianceCell->setToolTip(tr("Voxels per cache cell: larger cells gather faster and blur more"));
     m_indirectResolution->setToolTip(tr("Cones are traced for one pixel in N×N and upsampled with depth- and "
@@ -156,16 +158,18 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_areaShadowResolution->addItem(tr("Full"), 1);
     m_areaShadowResolution->addItem(tr("Half"), 2);
     m_areaShadowResolution->addItem(tr("Quarter"), 4);
-    m_areaShadowResolution->setToolTip(tr("The shadow cones of emissive surfaces (area lights) are traced for one "
-                                          "pixel in N×N and upsampled; their unshadowed light stays exact per pixel"));
+    m_areaShadowResolution->setToolTip(
+        tr("The shadow cones of emissive surfaces (area lights) are traced for one "
+           "pixel in N×N and upsampled; their unshadowed light stays exact per pixel"));
     m_specularResolution = new QComboBox;
     m_specularResolution->setObjectName(QStringLiteral("specularResolutionCombo"));
     m_specularResolution->addItem(tr("Full"), 1);
     m_specularResolution->addItem(tr("Half"), 2);
     m_specularResolution->addItem(tr("Quarter"), 4);
     m_specularResolution->addItem(tr("Eighth"), 8);
-    m_specularResolution->setToolTip(tr("The specular cone is traced for one pixel in N×N of glossy surfaces and "
-                                        "upsampled like the diffuse cones"));
+    m_specularResolution->setToolTip(
+        tr("The specular cone is traced for one pixel in N×N of glossy surfaces and "
+           "upsampled like the diffuse cones"));
 
     m_coneCount = new QSpinBox;
     m_coneCount->setObjectName(QStringLiteral("diffuseConeCount"));
@@ -342,9 +346,9 @@ void RenderSettingsDock::setDocument(doc::Document* document)
 render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const render::RenderSettings& base)
 {
     render::RenderSettings s = base;
-    // From the accuracy/time study (docs/ACCURACY.md, "Recommended defaults and presets"): only settings on or
-    // next to the frontier in both the Cornell box and the atrium. Finer grids and more cones were measured
-    // to cost more without lowering the error, so no preset uses them.
+    // From the accuracy/time study (docs/ACCURACY.md, "Recommended defaults and presets"): only settings on
+    // or next to the frontier in both the Cornell box and the atrium. Finer grids and more cones were
+    // measured to cost more without lowering the error, so no preset uses them.
     s.diffuseConeCount = 5;
     s.diffuseApertureDeg = 30.0f;
     s.stepFactor = 1.0f;
@@ -427,10 +431,11 @@ void RenderSettingsDock::load()
         return;
     const render::RenderSettings& s = m_document->state().settings;
 
-    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces, m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache, m_irradianceCell, m_coneCount,
-        m_diffuseAperture, m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct,
-        m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_fast,
-        m_balanced, m_high };
+    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces,
+        m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache,
+        m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step, m_maxDistance,
+        m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap,
+        m_exposure, m_view, m_fast, m_balanced, m_high };
     std::vector<std::unique_ptr<QSignalBlocker>> blockers;
     for (QWidget* w : editors)
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
@@ -442,9 +447,12 @@ void RenderSettingsDock::load()
     m_irradianceCache->setChecked(s.irradianceCache);
     selectIntItem(m_irradianceCell, s.irradianceCellSize, QString::number(s.irradianceCellSize));
     m_irradianceCell->setEnabled(s.irradianceCache);
-    selectIntItem(m_indirectResolution, s.indirectDivisor, QStringLiteral("1/") + QString::number(s.indirectDivisor));
-    selectIntItem(m_specularResolution, s.specularDivisor, QStringLiteral("1/") + QString::number(s.specularDivisor));
-    selectIntItem(m_areaShadowResolution, s.areaShadowDivisor, QStringLiteral("1/") + QString::number(s.areaShadowDivisor));
+    selectIntItem(
+        m_indirectResolution, s.indirectDivisor, QStringLiteral("1/") + QString::number(s.indirectDivisor));
+    selectIntItem(
+        m_specularResolution, s.specularDivisor, QStringLiteral("1/") + QString::number(s.specularDivisor));
+    selectIntItem(m_areaShadowResolution, s.areaShadowDivisor,
+        QStringLiteral("1/") + QString::number(s.areaShadowDivisor));
     if (m_coneCount->value() != s.diffuseConeCount)
         m_coneCount->setValue(s.diffuseConeCount);
     setSpinValue(m_diffuseAperture, double(s.diffuseApertureDeg));

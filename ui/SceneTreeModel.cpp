@@ -18,9 +18,12 @@ constexpr quintptr kLightItem = 1 + SceneTreeModel::LightsGroup;
 QString lightTypeName(doc::LightType type)
 {
     switch (type) {
-    case doc::LightType::Directional: return SceneTreeModel::tr("Directional");
-    case doc::LightType::Spot: return SceneTreeModel::tr("Spot");
-    case doc::LightType::Point: break;
+    case doc::LightType::Directional:
+        return SceneTreeModel::tr("Directional");
+    case doc::LightType::Spot:
+        return SceneTreeModel::tr("Spot");
+    case doc::LightType::Point:
+        break;
     }
     return SceneTreeModel::tr("Point");
 }

@@ -44,7 +44,8 @@ StatsDock::StatsDock(QWidget* parent)
     m_table->setHorizontalHeaderLabels({ tr("Pass"), tr("Action"), tr("Reason"), tr("GPU (ms)") });
     m_table->horizontalHeaderItem(ActionColumn)->setToolTip(tr("run, reused (inputs unchanged) or skipped"));
     m_table->horizontalHeaderItem(GpuColumn)->setToolTip(
-        tr("GPU time from timer queries, of the frame before this one in the viewport (reading this frame's would "
+        tr("GPU time from timer queries, of the frame before this one in the viewport (reading this frame's "
+           "would "
            "stall it); — where the pass did not run then"));
     m_table->verticalHeader()->hide();
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
@@ -65,9 +66,10 @@ StatsDock::StatsDock(QWidget* parent)
     m_bounces = makeValueLabel(QStringLiteral("bouncesLabel"));
     // Its text changes every frame while the light converges: it must not widen the dock and move the view.
     m_bounces->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    m_bounces->setToolTip(tr("The bounce iteration: iterations for the current light, and the relative change of "
-                             "the voxels' radiance in the last one. While idle the view keeps iterating until the "
-                             "change is under the tolerance (Render settings: Bounces)."));
+    m_bounces->setToolTip(
+        tr("The bounce iteration: iterations for the current light, and the relative change of "
+           "the voxels' radiance in the last one. While idle the view keeps iterating until the "
+           "change is under the tolerance (Render settings: Bounces)."));
     auto* form = new QFormLayout;
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("GPU total"), m_total);

@@ -46,12 +46,12 @@ bool SweepResults::parse(const QString& text, QString* error)
                 return int(index);
         return -1;
     };
-    const int labelColumn = column({"label"});
-    const int gpuColumn = column({"gpu_ms"});
-    const int wallColumn = column({"wall_ms", "time_ms"});
-    const int secondsColumn = column({"seconds"});
-    const int errorColumn = column({"rel_mse"});
-    const int kindColumn = column({"kind"});
+    const int labelColumn = column({ "label" });
+    const int gpuColumn = column({ "gpu_ms" });
+    const int wallColumn = column({ "wall_ms", "time_ms" });
+    const int secondsColumn = column({ "seconds" });
+    const int errorColumn = column({ "rel_mse" });
+    const int kindColumn = column({ "kind" });
     if (errorColumn < 0 || (gpuColumn < 0 && wallColumn < 0 && secondsColumn < 0)) {
         if (error)
             *error = QStringLiteral("needs a rel_mse column and a gpu_ms (or wall_ms, or seconds) column");
@@ -62,7 +62,9 @@ bool SweepResults::parse(const QString& text, QString* error)
         if (lines[lineIndex].trimmed().isEmpty())
             continue;
         const QStringList fields = splitLine(lines[lineIndex]);
-        const auto field = [&](int index) { return index >= 0 && index < fields.size() ? fields[index].trimmed() : QString(); };
+        const auto field = [&](int index) {
+            return index >= 0 && index < fields.size() ? fields[index].trimmed() : QString();
+        };
         Point point;
         point.label = labelColumn >= 0 ? field(labelColumn) : QStringLiteral("row %1").arg(lineIndex);
         point.reference = field(kindColumn).compare(QLatin1String("reference"), Qt::CaseInsensitive) == 0;
@@ -78,8 +80,8 @@ bool SweepResults::parse(const QString& text, QString* error)
         else if (!field(secondsColumn).isEmpty())
             point.timeMs = field(secondsColumn).toDouble(&timeOk) * 1000.0;
         point.relativeMse = field(errorColumn).toDouble(&errorOk);
-        const bool plottable = timeOk && errorOk && std::isfinite(point.timeMs) && std::isfinite(point.relativeMse)
-            && point.timeMs > 0.0 && point.relativeMse > 0.0;
+        const bool plottable = timeOk && errorOk && std::isfinite(point.timeMs)
+            && std::isfinite(point.relativeMse) && point.timeMs > 0.0 && point.relativeMse > 0.0;
         if (plottable)
             m_points.push_back(point);
         else
@@ -90,8 +92,8 @@ bool SweepResults::parse(const QString& text, QString* error)
 
 int SweepResults::count(bool reference) const
 {
-    return int(std::count_if(
-        m_points.begin(), m_points.end(), [reference](const Point& point) { return point.reference == reference; }));
+    return int(std::count_if(m_points.begin(), m_points.end(),
+        [reference](const Point& point) { return point.reference == reference; }));
 }
 
 QStringList SweepResults::splitLine(const QString& line)

@@ -10,9 +10,9 @@ namespace vct::ui {
 /**
  * The rows of an accuracy sweep's results.csv (written by `vct-bench accuracy`) that a chart of error against
  * time needs. Columns are found by their header names, so extra columns and any column order are fine:
- * `label`, error in `rel_mse`, optionally `kind` (`vct` or `reference`; rows without it count as VCT), and the
- * time as vct-bench plots it: `gpu_ms` for VCT rows, `wall_ms` for reference rows, each falling back to the
- * other (then `time_ms`, then `seconds`) when empty. Fields may be quoted as in RFC 4180.
+ * `label`, error in `rel_mse`, optionally `kind` (`vct` or `reference`; rows without it count as VCT), and
+ * the time as vct-bench plots it: `gpu_ms` for VCT rows, `wall_ms` for reference rows, each falling back to
+ * the other (then `time_ms`, then `seconds`) when empty. Fields may be quoted as in RFC 4180.
  */
 class SweepResults {
 public:

@@ -63,7 +63,8 @@ void ViewportWidget::initializeGL()
 {
     // A dock floating or the window moving to another screen destroys the context: drop every GL object
     // while it is still current, and build anew in the next initializeGL.
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl,
+        Qt::UniqueConnection);
     ++m_contextGeneration;
     try {
         m_renderer = std::make_unique<render::Renderer>(qtProcAddress);
@@ -91,13 +92,15 @@ void ViewportWidget::releaseGl()
 
 QRect ViewportWidget::traceRect() const
 {
-    const int w = int(std::lround(width() * devicePixelRatioF())), h = int(std::lround(height() * devicePixelRatioF()));
+    const int w = int(std::lround(width() * devicePixelRatioF())),
+              h = int(std::lround(height() * devicePixelRatioF()));
     return m_inspector.enabled ? QRect(0, 0, w / 2, h) : QRect(0, 0, w, h);
 }
 
 QRect ViewportWidget::inspectorRect() const
 {
-    const int w = int(std::lround(width() * devicePixelRatioF())), h = int(std::lround(height() * devicePixelRatioF()));
+    const int w = int(std::lround(width() * devicePixelRatioF())),
+              h = int(std::lround(height() * devicePixelRatioF()));
     return QRect(w / 2, 0, w - w / 2, h);
 }
 
@@ -113,19 +116,24 @@ void ViewportWidget::paintGL()
         const int h = std::max(1, int(std::lround(trace.height() * scale)));
         const render::FrameStats stats = m_renderer->renderFrame(m_document->state().camera, w, h);
         const float exposure = m_document->state().settings.exposure;
-        m_renderer->present(defaultFramebufferObject(), trace.x(), trace.y(), trace.width(), trace.height(), exposure);
+        m_renderer->present(
+            defaultFramebufferObject(), trace.x(), trace.y(), trace.width(), trace.height(), exposure);
         m_levelCount = m_renderer->voxelLevelCount();
         if (m_inspector.enabled) {
             const QRect right = inspectorRect();
             const int level = std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1));
-            m_lastCubeCount = m_renderer->drawVoxelCubes(m_document->state().camera, level, m_inspector.channel,
-                defaultFramebufferObject(), right.x(), right.y(), right.width(), right.height(), exposure);
+            m_lastCubeCount = m_renderer->drawVoxelCubes(m_document->state().camera, level,
+                m_inspector.channel, defaultFramebufferObject(), right.x(), right.y(), right.width(),
+                right.height(), exposure);
             emit cubesDrawn(int(m_lastCubeCount), m_levelCount);
         }
         if (m_nonFiniteCheck) {
             // A readback, so only while asked for; the label changes after this paint, not inside it.
-            QMetaObject::invokeMethod(m_nonFiniteOverlay,
-                [overlay = m_nonFiniteOverlay, counts = m_renderer->countNonFinite()] { overlay->showCounts(counts); },
+            QMetaObject::invokeMethod(
+                m_nonFiniteOverlay,
+                [overlay = m_nonFiniteOverlay, counts = m_renderer->countNonFinite()] {
+                    overlay->showCounts(counts);
+                },
                 Qt::QueuedConnection);
         }
         emit frameRendered(stats);
@@ -200,7 +208,8 @@ void ViewportWidget::setCamera(const render::Camera& camera)
     startInteraction();
 }
 
-bool ViewportWidget::rayThrough(const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const
+bool ViewportWidget::rayThrough(
+    const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const
 {
     const QRect rect = inspectorHalf ? inspectorRect() : traceRect();
     const float dpr = float(devicePixelRatioF());
@@ -253,17 +262,20 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
         const glm::vec3 up = glm::cross(right, forward);
         const float distance = std::max(glm::dot(center - camera.position, forward), 0.1f);
-        const float metresPerPixel = 2.0f * distance * std::tan(glm::radians(camera.fovYDeg) * 0.5f) / float(std::max(1, height()));
+        const float metresPerPixel
+            = 2.0f * distance * std::tan(glm::radians(camera.fovYDeg) * 0.5f) / float(std::max(1, height()));
         glm::vec3 move = (right * float(delta.x()) - up * float(delta.y())) * metresPerPixel;
         // Holding X, Y or Z keeps the move on that world axis, as in Blender's G X / G Y / G Z.
-        for (const auto& [key, axis] : {std::pair{Qt::Key_X, 0}, std::pair{Qt::Key_Y, 1}, std::pair{Qt::Key_Z, 2}})
+        for (const auto& [key, axis] :
+            { std::pair { Qt::Key_X, 0 }, std::pair { Qt::Key_Y, 1 }, std::pair { Qt::Key_Z, 2 } })
             if (m_flyKeys.contains(key)) {
                 glm::vec3 unit(0.0f);
                 unit[axis] = 1.0f;
                 // Screen motion along the axis's projection moves the object along the axis.
                 const glm::vec2 screenAxis(glm::dot(unit, right), -glm::dot(unit, up));
                 const float along = glm::length(screenAxis) > 1e-3f
-                    ? glm::dot(glm::vec2(float(delta.x()), float(delta.y())), glm::normalize(screenAxis)) / glm::length(screenAxis)
+                    ? glm::dot(glm::vec2(float(delta.x()), float(delta.y())), glm::normalize(screenAxis))
+                        / glm::length(screenAxis)
                     : 0.0f;
                 move = unit * along * metresPerPixel;
             }
@@ -277,7 +289,8 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         setCamera(CameraController::pan(camera, -float(delta.x()) / float(std::max(1, height())),
             float(delta.y()) / float(std::max(1, height()))));
     else if (m_dragButton == Qt::LeftButton || m_dragButton == Qt::RightButton)
-        setCamera(CameraController::orbit(camera, float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
+        setCamera(CameraController::orbit(
+            camera, float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
@@ -285,7 +298,8 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     const bool click = (event->position().toPoint() - m_pressPosition).manhattanLength() < 4;
     if (click && event->button() == Qt::LeftButton && !m_movingNode) {
         glm::vec3 origin, direction;
-        const bool inInspector = m_inspector.enabled && !rayThrough(event->position().toPoint(), origin, direction, false);
+        const bool inInspector
+            = m_inspector.enabled && !rayThrough(event->position().toPoint(), origin, direction, false);
         if (rayThrough(event->position().toPoint(), origin, direction, inInspector))
             m_document->setSelectedNode(sync::pickNode(*m_document, origin, direction).node);
     }
@@ -400,7 +414,8 @@ void ViewportWidget::hoverVoxel(const QPoint& position)
         const glm::vec3 hi = lo + glm::vec3(listing.cellSize);
         float t0 = 0.0f, t1 = best;
         for (int axis = 0; axis < 3 && t0 <= t1; ++axis) {
-            float a = (lo[axis] - origin[axis]) / direction[axis], b = (hi[axis] - origin[axis]) / direction[axis];
+            float a = (lo[axis] - origin[axis]) / direction[axis],
+                  b = (hi[axis] - origin[axis]) / direction[axis];
             if (a > b)
                 std::swap(a, b);
             t0 = std::max(t0, a);

@@ -30,9 +30,9 @@ class NonFiniteOverlay;
 /**
  * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (orbit with the left button,
  * pan with the middle button or Shift, wheel zoom, WASD/QE fly, F frames the selection), picks nodes with a
- * click and moves the selected node with Ctrl+drag (hold X, Y or Z to keep to that axis). While anything moves it renders at reduced resolution
- * and refines to full resolution once idle. With the inspector on, the right half shows the voxels of one
- * mip level as instanced cubes seen by the same camera.
+ * click and moves the selected node with Ctrl+drag (hold X, Y or Z to keep to that axis). While anything
+ * moves it renders at reduced resolution and refines to full resolution once idle. With the inspector on, the
+ * right half shows the voxels of one mip level as instanced cubes seen by the same camera.
  */
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -45,7 +45,8 @@ public:
     const InspectorSettings& inspector() const { return m_inspector; }
     /**
      * Renders the current view at full resolution now and returns its linear radiance (export, tests, the
-     * reference comparison). @p stats, if given, receives that frame's figures (GPU ms of the passes that ran).
+     * reference comparison). @p stats, if given, receives that frame's figures (GPU ms of the passes that
+     * ran).
      */
     render::RadianceImage renderFullFrame(int width, int height, render::FrameStats* stats = nullptr);
     /** Cubes drawn in the last frame by the inspector. */
@@ -90,7 +91,8 @@ private:
     void flyStep();
     void hoverVoxel(const QPoint& position);
     /** World ray through a widget position (in the cone-traced half when the inspector splits the view). */
-    bool rayThrough(const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const;
+    bool rayThrough(
+        const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const;
     QRect traceRect() const;
     QRect inspectorRect() const;
 

@@ -16,7 +16,8 @@ VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
     auto* body = new QWidget(this);
     auto* form = new QFormLayout(body);
     m_enabled = new QCheckBox(tr("Show voxels beside the image"), body);
-    m_enabled->setToolTip(tr("Splits the viewport: cone-traced image on the left, voxels as cubes on the right, same camera."));
+    m_enabled->setToolTip(
+        tr("Splits the viewport: cone-traced image on the left, voxels as cubes on the right, same camera."));
     form->addRow(m_enabled);
     m_level = new QSlider(Qt::Horizontal, body);
     // Room for a 512^3 grid's ten levels until the renderer reports how many there are.
@@ -52,7 +53,8 @@ VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
 
 InspectorSettings VoxelInspectorDock::settings() const
 {
-    return {m_enabled->isChecked(), m_level->value(), render::VoxelChannel(m_channel->currentData().toInt())};
+    return { m_enabled->isChecked(), m_level->value(),
+        render::VoxelChannel(m_channel->currentData().toInt()) };
 }
 
 void VoxelInspectorDock::setSettings(const InspectorSettings& settings)

@@ -29,7 +29,6 @@
 #include <memory>
 #include <set>
 
-
 namespace vct::cli {
 
 namespace {

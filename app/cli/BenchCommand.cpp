@@ -5,9 +5,9 @@
 #include "cli/PlanBenchmark.h"
 #include "cli/SceneInput.h"
 #include "cli/TargetsBenchmark.h"
-#include "imageio/ImageFile.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
+#include "imageio/ImageFile.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -46,34 +46,53 @@ int BenchCommand::run(int argc, char** argv)
         "               GPU ms per frame for both (docs/BENCHMARKS.md).\n"
         "  perf SCENE   per-pass cost, voxel memory, cone-pass sampling efficiency and scaling curves (CSV,\n"
         "               Markdown, SVG/PNG charts); see vct-bench perf --help.\n"
-        "  accuracy SCENE  error against a reference and GPU time over a sweep of settings, with the path tracer's\n"
+        "  accuracy SCENE  error against a reference and GPU time over a sweep of settings, with the path "
+        "tracer's\n"
         "               own curve (CSV, Markdown, SVG/PNG chart); see vct-bench accuracy --help.\n"
-        "  targets SCENE   the naive path (--naive-set) against the settings given (--set), frames interleaved in\n"
-        "               one run: full-frame and camera-only speed-ups, the interactive preview's frame rate and,\n"
+        "  targets SCENE   the naive path (--naive-set) against the settings given (--set), frames "
+        "interleaved in\n"
+        "               one run: full-frame and camera-only speed-ups, the interactive preview's frame rate "
+        "and,\n"
         "               with --reference, both paths' relative MSE (docs/BENCHMARKS.md)."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("COMMAND"), QStringLiteral("plan, perf, accuracy or targets"));
-    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
-    const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Frame width (default 640)."), QStringLiteral("W"), QStringLiteral("640"));
-    const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Frame height (default 360)."), QStringLiteral("H"), QStringLiteral("360"));
-    const QCommandLineOption voxelOption(QStringLiteral("voxel-res"), QStringLiteral("Voxel grid resolution (default 128)."), QStringLiteral("N"), QStringLiteral("128"));
-    const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Timed frames per sequence and mode (default 5)."), QStringLiteral("N"), QStringLiteral("5"));
-    const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable (see vct-render --help)."), QStringLiteral("key=value"));
-    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Also write the Markdown tables to this file."), QStringLiteral("FILE.md"));
-    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    parser.addPositionalArgument(
+        QStringLiteral("COMMAND"), QStringLiteral("plan, perf, accuracy or targets"));
+    parser.addPositionalArgument(
+        QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
+    const QCommandLineOption widthOption(QStringLiteral("width"),
+        QStringLiteral("Frame width (default 640)."), QStringLiteral("W"), QStringLiteral("640"));
+    const QCommandLineOption heightOption(QStringLiteral("height"),
+        QStringLiteral("Frame height (default 360)."), QStringLiteral("H"), QStringLiteral("360"));
+    const QCommandLineOption voxelOption(QStringLiteral("voxel-res"),
+        QStringLiteral("Voxel grid resolution (default 128)."), QStringLiteral("N"), QStringLiteral("128"));
+    const QCommandLineOption framesOption(QStringLiteral("frames"),
+        QStringLiteral("Timed frames per sequence and mode (default 5)."), QStringLiteral("N"),
+        QStringLiteral("5"));
+    const QCommandLineOption setOption(QStringLiteral("set"),
+        QStringLiteral("Render setting, repeatable (see vct-render --help)."), QStringLiteral("key=value"));
+    const QCommandLineOption outOption(QStringLiteral("out"),
+        QStringLiteral("Also write the Markdown tables to this file."), QStringLiteral("FILE.md"));
+    const QCommandLineOption glOption(QStringLiteral("gl"),
+        QStringLiteral(
+            "Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."),
+        QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     const QCommandLineOption naiveSetOption(QStringLiteral("naive-set"),
-        QStringLiteral("targets: a setting of the naive path on top of --set, repeatable (default: indirect_res=1, "
-                       "specular_res=1 and irradiance_cache=off, every pixel traced with the full cone set)."),
+        QStringLiteral(
+            "targets: a setting of the naive path on top of --set, repeatable (default: indirect_res=1, "
+            "specular_res=1 and irradiance_cache=off, every pixel traced with the full cone set)."),
         QStringLiteral("key=value"));
     const QCommandLineOption referenceOption(QStringLiteral("reference"),
-        QStringLiteral("targets: a linear reference image (PFM/EXR) of the scene's camera; frames are box-downsampled to its size."),
+        QStringLiteral("targets: a linear reference image (PFM/EXR) of the scene's camera; frames are "
+                       "box-downsampled to its size."),
         QStringLiteral("FILE"));
-    // The editor's viewport renders at this share of its size while the view moves (ViewportWidget::kInteractiveScale).
+    // The editor's viewport renders at this share of its size while the view moves
+    // (ViewportWidget::kInteractiveScale).
     const QCommandLineOption previewScaleOption(QStringLiteral("preview-scale"),
-        QStringLiteral("targets: the interactive preview's share of --width/--height (default 0.35, as the editor)."),
+        QStringLiteral(
+            "targets: the interactive preview's share of --width/--height (default 0.35, as the editor)."),
         QStringLiteral("S"), QStringLiteral("0.35"));
-    parser.addOptions({widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption,
-        naiveSetOption, referenceOption, previewScaleOption});
+    parser.addOptions({ widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption,
+        naiveSetOption, referenceOption, previewScaleOption });
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -100,7 +119,8 @@ int BenchCommand::run(int argc, char** argv)
     render::RenderSettings naiveSettings = settings;
     QStringList naiveAssignments = parser.values(naiveSetOption);
     if (naiveAssignments.isEmpty())
-        naiveAssignments = {QStringLiteral("indirect_res=1"), QStringLiteral("specular_res=1"), QStringLiteral("irradiance_cache=off")};
+        naiveAssignments = { QStringLiteral("indirect_res=1"), QStringLiteral("specular_res=1"),
+            QStringLiteral("irradiance_cache=off") };
     if (const QString problem = applySettingAssignments(naiveAssignments, naiveSettings); !problem.isEmpty())
         return fail(1, problem);
     const double previewScale = parser.value(previewScaleOption).toDouble(&ok);
@@ -114,8 +134,11 @@ int BenchCommand::run(int argc, char** argv)
             return fail(1, QString::fromStdString(readError));
         const int factor = width / reference->width;
         if (factor < 1 || reference->width * factor != width || reference->height * factor != height)
-            return fail(1, QStringLiteral("the reference is %1x%2: --width/--height must be the same integer multiple of it")
-                               .arg(reference->width).arg(reference->height));
+            return fail(1,
+                QStringLiteral(
+                    "the reference is %1x%2: --width/--height must be the same integer multiple of it")
+                    .arg(reference->width)
+                    .arg(reference->height));
     }
 
     std::string contextError;
@@ -134,11 +157,11 @@ int BenchCommand::run(int argc, char** argv)
             fast.setScene(scene);
             const int previewWidth = std::max(1, int(width * previewScale + 0.5));
             const int previewHeight = std::max(1, int(height * previewScale + 0.5));
-            const TargetsResult result = TargetsBenchmark::run(naive, fast, scene.camera, width, height, previewWidth,
-                previewHeight, frames, reference ? &*reference : nullptr);
-            std::string command = "`vct-bench targets " + args[1].toStdString() + " --width " + std::to_string(width)
-                + " --height " + std::to_string(height) + " --voxel-res " + std::to_string(settings.voxelResolution)
-                + " --frames " + std::to_string(frames);
+            const TargetsResult result = TargetsBenchmark::run(naive, fast, scene.camera, width, height,
+                previewWidth, previewHeight, frames, reference ? &*reference : nullptr);
+            std::string command = "`vct-bench targets " + args[1].toStdString() + " --width "
+                + std::to_string(width) + " --height " + std::to_string(height) + " --voxel-res "
+                + std::to_string(settings.voxelResolution) + " --frames " + std::to_string(frames);
             for (const QString& a : parser.values(setOption))
                 command += " --set " + a.toStdString();
             for (const QString& a : parser.values(naiveSetOption))
@@ -156,8 +179,10 @@ int BenchCommand::run(int argc, char** argv)
                     results.back().plannedMs, results.back().forcedMs);
             }
             char header[512];
-            std::snprintf(header, sizeof header, "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
-                qPrintable(args[1]), width, height, settings.voxelResolution, frames, context->description().c_str());
+            std::snprintf(header, sizeof header,
+                "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
+                qPrintable(args[1]), width, height, settings.voxelResolution, frames,
+                context->description().c_str());
             report = header + PlanBenchmark::markdown(results);
         }
     } catch (const std::exception& e) {
@@ -166,8 +191,10 @@ int BenchCommand::run(int argc, char** argv)
     std::fputs(report.c_str(), stdout);
     if (parser.isSet(outOption)) {
         QSaveFile file(parser.value(outOption));
-        if (!file.open(QIODevice::WriteOnly) || file.write(report.c_str(), qint64(report.size())) < 0 || !file.commit())
-            return fail(3, QStringLiteral("cannot write '%1': %2").arg(parser.value(outOption), file.errorString()));
+        if (!file.open(QIODevice::WriteOnly) || file.write(report.c_str(), qint64(report.size())) < 0
+            || !file.commit())
+            return fail(
+                3, QStringLiteral("cannot write '%1': %2").arg(parser.value(outOption), file.errorString()));
     }
     return 0;
 }

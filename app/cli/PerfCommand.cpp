@@ -121,8 +121,9 @@ int PerfCommand::run(int argc, char** argv)
         QStringLiteral("Directory for the CSV, Markdown and chart files (default perf-results)."),
         QStringLiteral("DIR"), QStringLiteral("perf-results"));
     const QCommandLineOption glOption(QStringLiteral("gl"),
-        QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"),
-        QStringLiteral("egl"));
+        QStringLiteral(
+            "Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."),
+        QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     parser.addOptions({ sizesOption, gridsOption, trianglesOption, baseSizeOption, baseGridOption,
         framesOption, setOption, outOption, glOption });
     parser.process(app);

@@ -13,8 +13,8 @@ namespace vct::cli {
 
 namespace {
 
-using report_text::format;
 using report_text::csvField;
+using report_text::format;
 
 /** Milliseconds with precision that suits their size. */
 std::string ms(double v)

@@ -13,13 +13,13 @@ namespace vct::cli {
 
 namespace {
 
-
 int largestStaticMesh(const render::Scene& scene)
 {
     int best = -1;
     for (std::size_t i = 0; i < scene.meshes.size(); ++i)
         if (!scene.meshes[i].dynamic
-            && (best < 0 || scene.meshes[i].triangleCount() > scene.meshes[std::size_t(best)].triangleCount()))
+            && (best < 0
+                || scene.meshes[i].triangleCount() > scene.meshes[std::size_t(best)].triangleCount()))
             best = int(i);
     return best;
 }
@@ -46,62 +46,68 @@ std::vector<render::FrameStats> replay(render::Renderer& renderer, const render:
 std::vector<EditSequence> PlanBenchmark::standardSequences(const render::Scene& scene)
 {
     std::vector<EditSequence> sequences;
-    sequences.push_back({"orbit the camera", [](render::Renderer&, render::Camera& camera, int) {
-                             const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(3.0f), camera.up);
-                             camera.position = camera.lookAt + glm::vec3(turn * glm::vec4(camera.position - camera.lookAt, 0.0f));
-                         }});
+    sequences.push_back({ "orbit the camera", [](render::Renderer&, render::Camera& camera, int) {
+                             const glm::mat4 turn
+                                 = glm::rotate(glm::mat4(1.0f), glm::radians(3.0f), camera.up);
+                             camera.position = camera.lookAt
+                                 + glm::vec3(turn * glm::vec4(camera.position - camera.lookAt, 0.0f));
+                         } });
     if (!scene.pointLights.empty() || !scene.directionalLights.empty())
-        sequences.push_back({"move the light", [scene](render::Renderer& renderer, render::Camera&, int frame) {
-                                 std::vector<render::PointLight> points = scene.pointLights;
-                                 std::vector<render::DirectionalLight> directionals = scene.directionalLights;
-                                 const float offset = 0.05f * float(frame + 1);
-                                 for (render::PointLight& light : points)
-                                     light.position.x += offset;
-                                 for (render::DirectionalLight& light : directionals)
-                                     light.direction.x += offset;
-                                 renderer.setLights(points, directionals);
-                             }});
+        sequences.push_back(
+            { "move the light", [scene](render::Renderer& renderer, render::Camera&, int frame) {
+                 std::vector<render::PointLight> points = scene.pointLights;
+                 std::vector<render::DirectionalLight> directionals = scene.directionalLights;
+                 const float offset = 0.05f * float(frame + 1);
+                 for (render::PointLight& light : points)
+                     light.position.x += offset;
+                 for (render::DirectionalLight& light : directionals)
+                     light.direction.x += offset;
+                 renderer.setLights(points, directionals);
+             } });
     for (std::size_t i = 0; i < scene.meshes.size(); ++i)
         if (scene.meshes[i].dynamic) {
             const glm::mat4 base = scene.meshes[i].transform;
-            sequences.push_back({"drag the dynamic object (" + scene.meshes[i].name + ")",
+            sequences.push_back({ "drag the dynamic object (" + scene.meshes[i].name + ")",
                 [i, base](render::Renderer& renderer, render::Camera&, int frame) {
-                    renderer.setMeshTransform(i, glm::translate(glm::mat4(1.0f), glm::vec3(0.05f * float(frame + 1), 0, 0)) * base);
-                }});
+                    renderer.setMeshTransform(
+                        i, glm::translate(glm::mat4(1.0f), glm::vec3(0.05f * float(frame + 1), 0, 0)) * base);
+                } });
             break;
         }
     if (const int mesh = largestStaticMesh(scene); mesh >= 0) {
         const int index = scene.meshes[std::size_t(mesh)].material;
         const render::Material original = scene.materials[std::size_t(index)];
-        sequences.push_back({"edit one material (" + original.name + ")",
+        sequences.push_back({ "edit one material (" + original.name + ")",
             [index, original](render::Renderer& renderer, render::Camera&, int frame) {
                 render::Material edited = original;
                 edited.albedo *= frame % 2 ? 1.0f : 0.9f;
                 renderer.setMaterial(std::size_t(index), edited);
-            }});
+            } });
     }
     for (std::size_t m = 0; m < scene.materials.size(); ++m)
         if (scene.materials[m].isGlossy()) {
             const render::Material glossy = scene.materials[m];
-            sequences.push_back({"toggle a glossy material (" + glossy.name + ")",
+            sequences.push_back({ "toggle a glossy material (" + glossy.name + ")",
                 [m, glossy](render::Renderer& renderer, render::Camera&, int frame) {
                     render::Material edited = glossy;
                     if (frame % 2 == 0)
                         edited.specular = glm::vec3(0.0f);
                     renderer.setMaterial(m, edited);
-                }});
+                } });
             break;
         }
     return sequences;
 }
 
-SequenceResult PlanBenchmark::run(render::Renderer& renderer, const render::Scene& scene, const EditSequence& sequence,
-    int width, int height, int frames)
+SequenceResult PlanBenchmark::run(render::Renderer& renderer, const render::Scene& scene,
+    const EditSequence& sequence, int width, int height, int frames)
 {
     SequenceResult result;
     result.name = sequence.name;
-    const std::vector<render::FrameStats> planned = replay(renderer, scene, sequence, width, height, frames, false);
-    const std::vector<render::FrameStats> forced = replay(renderer, scene, sequence, width, height, frames, true);
+    const std::vector<render::FrameStats> planned
+        = replay(renderer, scene, sequence, width, height, frames, false);
+    const std::vector<render::FrameStats> forced
+        = replay(renderer, scene, sequence, width, height, frames, true);
     std::vector<double> plannedTotals, forcedTotals;
     for (const render::FrameStats& f : planned)
         plannedTotals.push_back(f.totalGpuMs);
@@ -126,15 +132,17 @@ std::string PlanBenchmark::markdown(const std::vector<SequenceResult>& results)
     char line[512];
     out << "| edit sequence | planned ms/frame | forced ms/frame | forced / planned |\n|---|---|---|---|\n";
     for (const SequenceResult& r : results) {
-        std::snprintf(line, sizeof line, "| %s | %.1f | %.1f | %.2f× |\n", r.name.c_str(), r.plannedMs, r.forcedMs,
-            r.plannedMs > 0.0 ? r.forcedMs / r.plannedMs : 0.0);
+        std::snprintf(line, sizeof line, "| %s | %.1f | %.1f | %.2f× |\n", r.name.c_str(), r.plannedMs,
+            r.forcedMs, r.plannedMs > 0.0 ? r.forcedMs / r.plannedMs : 0.0);
         out << line;
     }
     for (const SequenceResult& r : results) {
-        out << "\n**" << r.name << "**, planned passes (median ms over the frames; action and reason of the last frame):\n\n"
+        out << "\n**" << r.name
+            << "**, planned passes (median ms over the frames; action and reason of the last frame):\n\n"
             << "| pass | action | ms | reason |\n|---|---|---|---|\n";
         for (const render::PassStats& p : r.plannedPasses) {
-            std::snprintf(line, sizeof line, "| %s | %s | %.1f | %s |\n", p.name.c_str(), p.action.c_str(), p.gpuMs, p.reason.c_str());
+            std::snprintf(line, sizeof line, "| %s | %s | %.1f | %s |\n", p.name.c_str(), p.action.c_str(),
+                p.gpuMs, p.reason.c_str());
             out << line;
         }
     }

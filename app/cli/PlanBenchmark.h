@@ -37,8 +37,8 @@ class PlanBenchmark {
 public:
     /** The standard sequences for a scene (those that do not apply, e.g. no dynamic mesh, are left out). */
     static std::vector<EditSequence> standardSequences(const render::Scene& scene);
-    static SequenceResult run(render::Renderer& renderer, const render::Scene& scene, const EditSequence& sequence,
-        int width, int height, int frames);
+    static SequenceResult run(render::Renderer& renderer, const render::Scene& scene,
+        const EditSequence& sequence, int width, int height, int frames);
     static std::string markdown(const std::vector<SequenceResult>& results);
 };
 

@@ -2,21 +2,21 @@
 
 #include "cli/BlackImageCheck.h"
 
-#include "document/CameraFile.h"
-#include "imageio/ImageFile.h"
-#include "document/LightsFile.h"
-#include "document/SceneLoader.h"
 #include "cli/SceneInput.h"
-#include "cli/TerminalProgress.h"
 #include "cli/StatsJson.h"
+#include "cli/TerminalProgress.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
+#include "document/CameraFile.h"
+#include "document/LightsFile.h"
+#include "document/SceneLoader.h"
+#include "imageio/ImageFile.h"
 #include "imageio/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
 
 #include <QCommandLineParser>
-#include <QJsonArray>
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
 
@@ -24,7 +24,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-
 
 namespace vct::cli {
 
@@ -40,8 +39,9 @@ QString settingsHelp()
 {
     QString text = QStringLiteral("\nSettings for --set key=value (defaults shown):\n");
     for (const auto& row : render::RenderSettings().describe())
-        text += QStringLiteral("  %1=%2  %3\n").arg(QString::fromStdString(row[0]), QString::fromStdString(row[1]),
-            QString::fromStdString(row[2]));
+        text += QStringLiteral("  %1=%2  %3\n")
+                    .arg(QString::fromStdString(row[0]), QString::fromStdString(row[1]),
+                        QString::fromStdString(row[2]));
     return text;
 }
 
@@ -63,7 +63,8 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
     try {
         render::ReferenceRenderer renderer(scene, camera, width, height, request.settings);
         TerminalProgress progress("vct-render: reference");
-        const bool done = renderer.render(request.samplesPerPixel, [&](double fraction) { progress(fraction); });
+        const bool done
+            = renderer.render(request.samplesPerPixel, [&](double fraction) { progress(fraction); });
         progress.finish();
         if (!done)
             return fail(3, QStringLiteral("the reference render stopped before it finished"));
@@ -75,8 +76,10 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
     std::uint64_t nonFinite = 0;
     if (checkFinite) {
         nonFinite = io::ImageMetrics::nonFiniteCount(image);
-        std::printf("check-finite: %llu non-finite channel values in the image (%llu non-finite paths dropped)\n",
-            static_cast<unsigned long long>(nonFinite), static_cast<unsigned long long>(stats.nonFiniteSamples));
+        std::printf(
+            "check-finite: %llu non-finite channel values in the image (%llu non-finite paths dropped)\n",
+            static_cast<unsigned long long>(nonFinite),
+            static_cast<unsigned long long>(stats.nonFiniteSamples));
     }
     if (const std::string warning = blackImageWarning(image, scene, camera); !warning.empty())
         std::fprintf(stderr, "vct-render: warning: %s\n", warning.c_str());
@@ -84,7 +87,8 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
     if (!io::ImageFile::write(outPath.toStdString(), image, exposure, &writeError))
         return fail(3, QString::fromStdString(writeError));
     const double seconds = std::max(stats.seconds, std::numeric_limits<double>::min());
-    std::printf("wrote %s (%dx%d) with the reference path tracer: %d spp, max %d bounces, seed %llu, %d threads\n",
+    std::printf(
+        "wrote %s (%dx%d) with the reference path tracer: %d spp, max %d bounces, seed %llu, %d threads\n",
         qPrintable(outPath), width, height, request.samplesPerPixel, request.settings.maxBounces,
         static_cast<unsigned long long>(request.settings.seed), request.settings.threads);
     std::printf("  %.2f s, %.3f M samples/s, %.2f M rays/s (%.2f rays per sample)\n", stats.seconds,
@@ -104,8 +108,10 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
         json["rays"] = double(stats.rays);
         json["non_finite_samples"] = double(stats.nonFiniteSamples);
         QSaveFile file(statsPath);
-        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0 || !file.commit())
-            return fail(3, QStringLiteral("cannot write stats to '%1': %2").arg(statsPath, file.errorString()));
+        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0
+            || !file.commit())
+            return fail(
+                3, QStringLiteral("cannot write stats to '%1': %2").arg(statsPath, file.errorString()));
     }
     return nonFinite ? 4 : 0;
 }
@@ -130,37 +136,65 @@ int RenderCommand::run(int argc, char** argv)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("vct-render"));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Renders a scene with voxel cone tracing, headless; with --reference, with the CPU path tracer instead.\n"
-        "SCENE is a project (.vctproj), builtin:NAME (cornell, cornell_point, atrium, bunny, default) or a model\nfile Assimp reads "
-        "(OBJ+MTL, glTF/GLB, PLY, FBX, ...); NAME.lights.json and NAME.camera.json beside a model are read too.\n"
-        "Units: point lights W/sr, directional lights W/m^2, emission and output radiance W/(m^2 sr).\n"
-        ".png output is tone-mapped sRGB (exposure + filmic curve); .pfm/.exr hold linear radiance.")
+    parser.setApplicationDescription(
+        QStringLiteral(
+            "Renders a scene with voxel cone tracing, headless; with --reference, with the CPU path tracer "
+            "instead.\n"
+            "SCENE is a project (.vctproj), builtin:NAME (cornell, cornell_point, atrium, bunny, default) or "
+            "a model\nfile Assimp reads "
+            "(OBJ+MTL, glTF/GLB, PLY, FBX, ...); NAME.lights.json and NAME.camera.json beside a model are "
+            "read too.\n"
+            "Units: point lights W/sr, directional lights W/m^2, emission and output radiance W/(m^2 sr).\n"
+            ".png output is tone-mapped sRGB (exposure + filmic curve); .pfm/.exr hold linear radiance.")
         + settingsHelp());
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
-    const QCommandLineOption cameraOption(QStringLiteral("camera"), QStringLiteral("Camera JSON (the format of tests/data/reference)."), QStringLiteral("cam.json"));
-    const QCommandLineOption lightsOption(QStringLiteral("lights"), QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));
-    const QCommandLineOption widthOption(QStringLiteral("width"), QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
-    const QCommandLineOption heightOption(QStringLiteral("height"), QStringLiteral("Image height in pixels (default: camera file or 360)."), QStringLiteral("H"));
-    const QCommandLineOption outOption(QStringLiteral("out"), QStringLiteral("Output image: .png, .pfm or .exr (default out.png)."), QStringLiteral("FILE"), QStringLiteral("out.png"));
-    const QCommandLineOption voxelOption(QStringLiteral("voxel-res"), QStringLiteral("Voxel grid resolution, power of two 8..512 (same as --set voxel_res=N)."), QStringLiteral("N"));
-    const QCommandLineOption setOption(QStringLiteral("set"), QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
-    const QCommandLineOption statsOption(QStringLiteral("stats"), QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."), QStringLiteral("stats.json"));
-    const QCommandLineOption framesOption(QStringLiteral("frames"), QStringLiteral("Render N full frames (every pass re-run); --stats gives the median of frames 2..N, leaving out the first, which compiles shaders. Default 1."), QStringLiteral("N"), QStringLiteral("1"));
+    parser.addPositionalArgument(
+        QStringLiteral("SCENE"), QStringLiteral("a .vctproj project, builtin:NAME or a model file"));
+    const QCommandLineOption cameraOption(QStringLiteral("camera"),
+        QStringLiteral("Camera JSON (the format of tests/data/reference)."), QStringLiteral("cam.json"));
+    const QCommandLineOption lightsOption(QStringLiteral("lights"),
+        QStringLiteral("Lights JSON replacing the scene's lights."), QStringLiteral("lights.json"));
+    const QCommandLineOption widthOption(QStringLiteral("width"),
+        QStringLiteral("Image width in pixels (default: camera file or 640)."), QStringLiteral("W"));
+    const QCommandLineOption heightOption(QStringLiteral("height"),
+        QStringLiteral("Image height in pixels (default: camera file or 360)."), QStringLiteral("H"));
+    const QCommandLineOption outOption(QStringLiteral("out"),
+        QStringLiteral("Output image: .png, .pfm or .exr (default out.png)."), QStringLiteral("FILE"),
+        QStringLiteral("out.png"));
+    const QCommandLineOption voxelOption(QStringLiteral("voxel-res"),
+        QStringLiteral("Voxel grid resolution, power of two 8..512 (same as --set voxel_res=N)."),
+        QStringLiteral("N"));
+    const QCommandLineOption setOption(QStringLiteral("set"),
+        QStringLiteral("Render setting, repeatable; see the list below."), QStringLiteral("key=value"));
+    const QCommandLineOption statsOption(QStringLiteral("stats"),
+        QStringLiteral("Write per-pass GPU ms, voxel memory and settings as JSON."),
+        QStringLiteral("stats.json"));
+    const QCommandLineOption framesOption(QStringLiteral("frames"),
+        QStringLiteral("Render N full frames (every pass re-run); --stats gives the median of frames 2..N, "
+                       "leaving out the first, which compiles shaders. Default 1."),
+        QStringLiteral("N"), QStringLiteral("1"));
     const QCommandLineOption checkFiniteOption(QStringLiteral("check-finite"),
         QStringLiteral("Count NaN/Inf texels in every float render target and voxel level; exit 4 if any."));
-    const QCommandLineOption glOption(QStringLiteral("gl"), QStringLiteral("Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."), QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
+    const QCommandLineOption glOption(QStringLiteral("gl"),
+        QStringLiteral(
+            "Headless GL backend: egl (default; falls back to osmesa when --gl is not given) or osmesa."),
+        QStringLiteral("egl|osmesa"), QStringLiteral("egl"));
     const QCommandLineOption referenceOption(QStringLiteral("reference"),
-        QStringLiteral("Render the ground truth with the CPU path tracer (Embree) instead of the GL renderer; no GL context is needed."));
-    const QCommandLineOption sppOption(QStringLiteral("spp"), QStringLiteral("--reference: samples per pixel (default 256)."), QStringLiteral("N"));
+        QStringLiteral("Render the ground truth with the CPU path tracer (Embree) instead of the GL "
+                       "renderer; no GL context is needed."));
+    const QCommandLineOption sppOption(QStringLiteral("spp"),
+        QStringLiteral("--reference: samples per pixel (default 256)."), QStringLiteral("N"));
     const QCommandLineOption maxBouncesOption(QStringLiteral("max-bounces"),
-        QStringLiteral("--reference: longest path in reflections, 0 = emitters only, 1 = direct light (default 64)."), QStringLiteral("K"));
-    const QCommandLineOption seedOption(QStringLiteral("seed"), QStringLiteral("--reference: random seed (default 0); same seed, same image."), QStringLiteral("S"));
-    const QCommandLineOption threadsOption(QStringLiteral("threads"), QStringLiteral("--reference: worker threads (default: all cores)."), QStringLiteral("T"));
-    parser.addOptions({cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption, setOption,
-        statsOption, framesOption, checkFiniteOption, glOption, referenceOption, sppOption, maxBouncesOption,
-        seedOption, threadsOption});
+        QStringLiteral(
+            "--reference: longest path in reflections, 0 = emitters only, 1 = direct light (default 64)."),
+        QStringLiteral("K"));
+    const QCommandLineOption seedOption(QStringLiteral("seed"),
+        QStringLiteral("--reference: random seed (default 0); same seed, same image."), QStringLiteral("S"));
+    const QCommandLineOption threadsOption(QStringLiteral("threads"),
+        QStringLiteral("--reference: worker threads (default: all cores)."), QStringLiteral("T"));
+    parser.addOptions({ cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption,
+        setOption, statsOption, framesOption, checkFiniteOption, glOption, referenceOption, sppOption,
+        maxBouncesOption, seedOption, threadsOption });
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -191,7 +225,8 @@ int RenderCommand::run(int argc, char** argv)
     render::Camera camera = view.camera;
     int width = view.width;
     int height = view.height;
-    for (const auto& [option, target] : {std::pair{&widthOption, &width}, std::pair{&heightOption, &height}})
+    for (const auto& [option, target] :
+        { std::pair { &widthOption, &width }, std::pair { &heightOption, &height } })
         if (parser.isSet(*option)) {
             bool ok = false;
             *target = parser.value(*option).toInt(&ok);
@@ -200,31 +235,33 @@ int RenderCommand::run(int argc, char** argv)
         }
     const QString outPath = parser.value(outOption);
     if (io::ImageFile::formatFor(outPath.toStdString()) == io::ImageFile::Format::Unknown)
-        return fail(1, QStringLiteral("cannot tell the image format of '%1' (use .png, .pfm or .exr)").arg(outPath));
+        return fail(
+            1, QStringLiteral("cannot tell the image format of '%1' (use .png, .pfm or .exr)").arg(outPath));
 
     if (parser.isSet(referenceOption)) {
         ReferenceRequest request;
         long long spp = request.samplesPerPixel, maxBounces = request.settings.maxBounces,
                   threads = std::max(1, request.settings.threads), seed = 0;
-        for (const QString& problem : {readIntOption(parser, sppOption, 1, 1 << 20, spp),
+        for (const QString& problem : { readIntOption(parser, sppOption, 1, 1 << 20, spp),
                  readIntOption(parser, maxBouncesOption, 0, 100000, maxBounces),
                  readIntOption(parser, threadsOption, 1, 1024, threads),
-                 readIntOption(parser, seedOption, 0, std::numeric_limits<long long>::max(), seed)})
+                 readIntOption(parser, seedOption, 0, std::numeric_limits<long long>::max(), seed) })
             if (!problem.isEmpty())
                 return fail(1, problem);
         request.samplesPerPixel = int(spp);
         request.settings.maxBounces = int(maxBounces);
         request.settings.threads = int(threads);
         request.settings.seed = std::uint64_t(seed);
-        for (const QCommandLineOption* glOnly : {&framesOption, &glOption, &voxelOption})
+        for (const QCommandLineOption* glOnly : { &framesOption, &glOption, &voxelOption })
             if (parser.isSet(*glOnly))
                 std::fprintf(stderr, "vct-render: warning: --%s is ignored with --reference\n",
                     qPrintable(glOnly->names().front()));
         return renderReference(request, scene, camera, width, height, outPath, settings.exposure,
-            parser.isSet(statsOption) ? parser.value(statsOption) : QString(), parser.isSet(checkFiniteOption));
+            parser.isSet(statsOption) ? parser.value(statsOption) : QString(),
+            parser.isSet(checkFiniteOption));
     }
     for (const QCommandLineOption* referenceOnly :
-        {&sppOption, &maxBouncesOption, &seedOption, &threadsOption})
+        { &sppOption, &maxBouncesOption, &seedOption, &threadsOption })
         if (parser.isSet(*referenceOnly))
             return fail(1, QStringLiteral("--%1 needs --reference").arg(referenceOnly->names().front()));
 
@@ -253,7 +290,8 @@ int RenderCommand::run(int argc, char** argv)
             for (const render::NonFiniteCount& c : renderer.countNonFinite()) {
                 nonFinite += c.count;
                 if (c.count)
-                    std::fprintf(stderr, "vct-render: %llu non-finite texels in %s\n", static_cast<unsigned long long>(c.count), c.resource.c_str());
+                    std::fprintf(stderr, "vct-render: %llu non-finite texels in %s\n",
+                        static_cast<unsigned long long>(c.count), c.resource.c_str());
             }
             std::printf("check-finite: %llu non-finite texels in all render targets and voxel levels\n",
                 static_cast<unsigned long long>(nonFinite));
@@ -269,17 +307,23 @@ int RenderCommand::run(int argc, char** argv)
     std::string writeError;
     if (!io::ImageFile::write(outPath.toStdString(), image, settings.exposure, &writeError))
         return fail(3, QString::fromStdString(writeError));
-    std::printf("wrote %s (%dx%d) with %s\n", qPrintable(outPath), width, height, context->description().c_str());
+    std::printf(
+        "wrote %s (%dx%d) with %s\n", qPrintable(outPath), width, height, context->description().c_str());
 
     if (parser.isSet(statsOption)) {
-        const QJsonObject json = statsToJson(timed, settings, sceneSpec, QString::fromStdString(context->description()));
+        const QJsonObject json
+            = statsToJson(timed, settings, sceneSpec, QString::fromStdString(context->description()));
         QSaveFile file(parser.value(statsOption));
-        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0 || !file.commit())
-            return fail(3, QStringLiteral("cannot write stats to '%1': %2").arg(parser.value(statsOption), file.errorString()));
+        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0
+            || !file.commit())
+            return fail(3,
+                QStringLiteral("cannot write stats to '%1': %2")
+                    .arg(parser.value(statsOption), file.errorString()));
         for (const QJsonValue& pass : json["passes"].toArray()) {
             const QJsonObject p = pass.toObject();
-            std::printf("  %-13s %-7s %8.2f ms  (%s)\n", qPrintable(p["name"].toString()), qPrintable(p["action"].toString()),
-                p["gpu_ms"].toDouble(), qPrintable(p["reason"].toString()));
+            std::printf("  %-13s %-7s %8.2f ms  (%s)\n", qPrintable(p["name"].toString()),
+                qPrintable(p["action"].toString()), p["gpu_ms"].toDouble(),
+                qPrintable(p["reason"].toString()));
         }
         std::printf("  total %.2f ms GPU, voxel memory %.1f MiB\n", json["total_gpu_ms"].toDouble(),
             json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0));

@@ -27,7 +27,8 @@ QString applySettingAssignments(const QStringList& assignments, render::RenderSe
         const int eq = assignment.indexOf(QLatin1Char('='));
         if (eq <= 0)
             return QStringLiteral("--set expects key=value, got '%1'").arg(assignment);
-        const std::string problem = settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
+        const std::string problem
+            = settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
         if (!problem.empty())
             return QString::fromStdString(problem);
     }
@@ -38,7 +39,8 @@ bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, cons
     render::Scene& scene, ViewInput& view, QString* error)
 {
     if (!lightsPath.isEmpty()) {
-        // Replaces the lights of the scene (or of a sibling NAME.lights.json); the scene is untouched on error.
+        // Replaces the lights of the scene (or of a sibling NAME.lights.json); the scene is untouched on
+        // error.
         render::Scene lit = scene;
         lit.pointLights.clear();
         lit.directionalLights.clear();

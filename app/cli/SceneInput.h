@@ -24,8 +24,8 @@ struct ViewInput {
 };
 
 /**
- * Resolves the view of a loaded scene: an explicit lights file (empty path: none) replaces the scene's lights;
- * the camera and size come from the camera file (empty path: none), else from the project or scene.
+ * Resolves the view of a loaded scene: an explicit lights file (empty path: none) replaces the scene's
+ * lights; the camera and size come from the camera file (empty path: none), else from the project or scene.
  */
 bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, const doc::SceneLoadInfo& info,
     render::Scene& scene, ViewInput& view, QString* error);

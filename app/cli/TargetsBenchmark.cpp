@@ -59,8 +59,9 @@ std::optional<double> errorAgainst(const render::RadianceImage& frame, const ren
 
 } // namespace
 
-TargetsResult TargetsBenchmark::run(render::Renderer& naive, render::Renderer& fast, const render::Camera& camera,
-    int width, int height, int previewWidth, int previewHeight, int frames, const render::RadianceImage* reference)
+TargetsResult TargetsBenchmark::run(render::Renderer& naive, render::Renderer& fast,
+    const render::Camera& camera, int width, int height, int previewWidth, int previewHeight, int frames,
+    const render::RadianceImage* reference)
 {
     TargetsResult result;
     result.width = width;
@@ -70,7 +71,7 @@ TargetsResult TargetsBenchmark::run(render::Renderer& naive, render::Renderer& f
     result.frames = std::max(1, frames);
 
     // Warm-up: shaders compiled, targets and voxel textures allocated.
-    for (render::Renderer* renderer : {&naive, &fast})
+    for (render::Renderer* renderer : { &naive, &fast })
         renderer->renderFrame(camera, width, height);
     Pairs full;
     for (int i = 0; i < result.frames; ++i)
@@ -81,7 +82,7 @@ TargetsResult TargetsBenchmark::run(render::Renderer& naive, render::Renderer& f
 
     render::Camera moving = camera;
     orbitCamera(moving, kOrbitStepDeg);
-    for (render::Renderer* renderer : {&naive, &fast})
+    for (render::Renderer* renderer : { &naive, &fast })
         renderer->renderFrame(moving, width, height); // warm-up of the camera-only path
     Pairs cameraOnly;
     for (int i = 0; i < result.frames; ++i) {
@@ -116,19 +117,26 @@ std::string TargetsBenchmark::markdown(const TargetsResult& r)
 {
     std::string text;
     char line[512];
-    const auto add = [&text, &line](int n) { text.append(line, std::size_t(std::max(0, std::min(n, int(sizeof line) - 1)))); };
+    const auto add = [&text, &line](int n) {
+        text.append(line, std::size_t(std::max(0, std::min(n, int(sizeof line) - 1))));
+    };
     add(std::snprintf(line, sizeof line,
         "Output %d×%d, %d timed frame pairs per mode; GPU ms are medians, ratios are medians of the per-pair "
         "ratios (min–max).\n\n",
         r.width, r.height, r.frames));
     text += "| target | naive ms | fast ms | ratio (min–max) | goal | met |\n|---|---|---|---|---|---|\n";
-    add(std::snprintf(line, sizeof line, "| full frame (every pass re-run) | %.1f | %.1f | **%.1f×** (%.1f–%.1f) | ≥ 15× | %s |\n",
-        r.naiveFullMs, r.fastFullMs, r.fullRatio, r.fullRatioMin, r.fullRatioMax, r.fullRatio >= 15.0 ? "yes" : "no"));
-    add(std::snprintf(line, sizeof line, "| camera-only frame | %.1f | %.1f | **%.1f×** (%.1f–%.1f) | ≥ 40× | %s |\n",
-        r.naiveCameraMs, r.fastCameraMs, r.cameraRatio, r.cameraRatioMin, r.cameraRatioMax, r.cameraRatio >= 40.0 ? "yes" : "no"));
+    add(std::snprintf(line, sizeof line,
+        "| full frame (every pass re-run) | %.1f | %.1f | **%.1f×** (%.1f–%.1f) | ≥ 15× | %s |\n",
+        r.naiveFullMs, r.fastFullMs, r.fullRatio, r.fullRatioMin, r.fullRatioMax,
+        r.fullRatio >= 15.0 ? "yes" : "no"));
+    add(std::snprintf(line, sizeof line,
+        "| camera-only frame | %.1f | %.1f | **%.1f×** (%.1f–%.1f) | ≥ 40× | %s |\n", r.naiveCameraMs,
+        r.fastCameraMs, r.cameraRatio, r.cameraRatioMin, r.cameraRatioMax,
+        r.cameraRatio >= 40.0 ? "yes" : "no"));
     const double fps = r.previewMs > 0.0 ? 1000.0 / r.previewMs : 0.0;
-    add(std::snprintf(line, sizeof line, "| interactive preview %d×%d, camera-only | | %.1f | **%.1f fps** | ≥ 5 fps | %s |\n",
-        r.previewWidth, r.previewHeight, r.previewMs, fps, fps >= 5.0 ? "yes" : "no"));
+    add(std::snprintf(line, sizeof line,
+        "| interactive preview %d×%d, camera-only | | %.1f | **%.1f fps** | ≥ 5 fps | %s |\n", r.previewWidth,
+        r.previewHeight, r.previewMs, fps, fps >= 5.0 ? "yes" : "no"));
     if (r.naiveRelativeMse && r.fastRelativeMse) {
         const double worse = *r.naiveRelativeMse > 0.0 ? *r.fastRelativeMse / *r.naiveRelativeMse - 1.0 : 0.0;
         add(std::snprintf(line, sizeof line,

@@ -36,7 +36,7 @@ QString normalizedSpec(const QString& spec)
 /** Splits an RGB emission into a colour with its largest channel 1 and that channel as the intensity. */
 void splitColor(const glm::vec3& value, glm::vec3* color, float* intensity)
 {
-    const float peak = std::max({value.x, value.y, value.z});
+    const float peak = std::max({ value.x, value.y, value.z });
     if (peak > 0.0f) {
         *color = value / peak;
         *intensity = peak;
@@ -48,7 +48,8 @@ void splitColor(const glm::vec3& value, glm::vec3* color, float* intensity)
 
 int countLights(const std::vector<LightNode>& lights, LightType type)
 {
-    return int(std::count_if(lights.begin(), lights.end(), [type](const LightNode& l) { return l.type == type; }));
+    return int(
+        std::count_if(lights.begin(), lights.end(), [type](const LightNode& l) { return l.type == type; }));
 }
 
 /**
@@ -94,7 +95,8 @@ std::vector<LightNode> lightsFromScene(
 }
 
 /** One node per mesh of `scene`, drawing from `source`, material indices shifted by `materialOffset`. */
-std::vector<SceneNode> nodesFromScene(const render::Scene& scene, int source, int materialOffset, quint64* nextId)
+std::vector<SceneNode> nodesFromScene(
+    const render::Scene& scene, int source, int materialOffset, quint64* nextId)
 {
     std::vector<SceneNode> nodes;
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -132,7 +134,7 @@ bool Document::newFromScene(const QString& spec, QString* error)
         return false;
 
     DocumentState state;
-    state.sources.push_back({source});
+    state.sources.push_back({ source });
     state.nodes = nodesFromScene(scene, 0, 0, &state.nextId);
     // Source 0's textures come first in the concatenation, so its texture indices stand as they are.
     state.materials = scene.materials;
@@ -149,7 +151,7 @@ bool Document::newFromScene(const QString& spec, QString* error)
         emit filePathChanged(m_filePath);
     }
     setSelectedNode(-1);
-    notify({ChangeEvent::Kind::Reset, -1});
+    notify({ ChangeEvent::Kind::Reset, -1 });
     return true;
 }
 
@@ -186,13 +188,18 @@ bool Document::openProject(const QString& path, QString* error)
         const std::size_t meshes = geometry.at(state.sources[std::size_t(node.source)].spec).meshes.size();
         if (std::size_t(node.mesh) >= meshes)
             return fail(QStringLiteral("nodes[%1].mesh").arg(i),
-                QStringLiteral("source %1 has %2 meshes, so %3 is out of range").arg(node.source).arg(meshes).arg(node.mesh));
+                QStringLiteral("source %1 has %2 meshes, so %3 is out of range")
+                    .arg(node.source)
+                    .arg(meshes)
+                    .arg(node.mesh));
     }
     for (std::size_t i = 0; i < state.materials.size(); ++i) {
         const int texture = state.materials[i].albedoTexture;
         if (texture >= 0 && std::size_t(texture) >= textureCount)
             return fail(QStringLiteral("materials[%1].albedo_texture").arg(i),
-                QStringLiteral("the sources have %1 textures, so %2 is out of range").arg(textureCount).arg(texture));
+                QStringLiteral("the sources have %1 textures, so %2 is out of range")
+                    .arg(textureCount)
+                    .arg(texture));
     }
 
     m_undoStack.clear();
@@ -202,7 +209,7 @@ bool Document::openProject(const QString& path, QString* error)
     m_filePath = absolutePath;
     emit filePathChanged(m_filePath);
     setSelectedNode(-1);
-    notify({ChangeEvent::Kind::Reset, -1});
+    notify({ ChangeEvent::Kind::Reset, -1 });
     return true;
 }
 
@@ -260,20 +267,23 @@ bool Document::addImportedModel(const QString& path, render::Scene loaded)
     std::vector<SceneNode> nodes
         = nodesFromScene(scene, int(m_state.sources.size()), int(m_state.materials.size()), &nextId);
     std::vector<LightNode> lights = lightsFromScene(scene, m_state.lights, &nextId);
-    m_undoStack.push(new ImportModelCommand(this, {spec}, std::move(materials), std::move(nodes), std::move(lights), nextId));
+    m_undoStack.push(new ImportModelCommand(
+        this, { spec }, std::move(materials), std::move(nodes), std::move(lights), nextId));
     return true;
 }
 
 void Document::setNodeTransform(int node, const NodeTransform& transform)
 {
-    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].transform == transform)
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size()
+        || m_state.nodes[std::size_t(node)].transform == transform)
         return;
     m_undoStack.push(new SetNodeTransformCommand(this, node, transform));
 }
 
 void Document::setNodeName(int node, const QString& name)
 {
-    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].name == name)
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size()
+        || m_state.nodes[std::size_t(node)].name == name)
         return;
     auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
     properties.name = name;
@@ -282,7 +292,8 @@ void Document::setNodeName(int node, const QString& name)
 
 void Document::setNodeVisible(int node, bool visible)
 {
-    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].visible == visible)
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size()
+        || m_state.nodes[std::size_t(node)].visible == visible)
         return;
     auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
     properties.visible = visible;
@@ -291,7 +302,8 @@ void Document::setNodeVisible(int node, bool visible)
 
 void Document::setNodeDynamic(int node, bool dynamic)
 {
-    if (node < 0 || std::size_t(node) >= m_state.nodes.size() || m_state.nodes[std::size_t(node)].dynamic == dynamic)
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size()
+        || m_state.nodes[std::size_t(node)].dynamic == dynamic)
         return;
     auto properties = SetNodePropertiesCommand::propertiesOf(*this, node);
     properties.dynamic = dynamic;
@@ -338,9 +350,7 @@ void Document::addLight(const LightNode& light)
         const QString kind = added.type == LightType::Point ? QStringLiteral("Point")
             : added.type == LightType::Spot                 ? QStringLiteral("Spot")
                                                             : QStringLiteral("Directional");
-        added.name = QStringLiteral("%1 light %2")
-                         .arg(kind)
-                         .arg(countLights(m_state.lights, added.type) + 1);
+        added.name = QStringLiteral("%1 light %2").arg(kind).arg(countLights(m_state.lights, added.type) + 1);
     }
     m_undoStack.push(new AddLightCommand(this, added));
 }
@@ -368,7 +378,7 @@ void Document::setCamera(const render::Camera& camera)
     if (sameCamera(m_state.camera, camera))
         return;
     m_state.camera = camera;
-    notify({ChangeEvent::Kind::Camera, -1});
+    notify({ ChangeEvent::Kind::Camera, -1 });
 }
 
 void Document::setSelectedNode(int node)

@@ -33,8 +33,8 @@ public:
     /** Opens a .vctproj. On failure the open document is untouched and `error` names the file and problem. */
     bool openProject(const QString& path, QString* error);
     /**
-     * Opens an autosaved copy as recovered work: untitled and modified, so that Save asks where to keep it and
-     * closing asks first. The copy itself is left in place; the caller removes it once the work is saved.
+     * Opens an autosaved copy as recovered work: untitled and modified, so that Save asks where to keep it
+     * and closing asks first. The copy itself is left in place; the caller removes it once the work is saved.
      */
     bool recoverProject(const QString& path, QString* error);
     /** Saves atomically; a failure leaves any old file whole. On success the document becomes clean. */

@@ -25,7 +25,8 @@ bool sameSettings(const render::RenderSettings& a, const render::RenderSettings&
 bool sameDocument(const DocumentState& a, const DocumentState& b)
 {
     return a.sources == b.sources && a.nodes == b.nodes && a.lights == b.lights && a.nextId == b.nextId
-        && std::equal(a.materials.begin(), a.materials.end(), b.materials.begin(), b.materials.end(), sameMaterial)
+        && std::equal(
+            a.materials.begin(), a.materials.end(), b.materials.begin(), b.materials.end(), sameMaterial)
         && sameCamera(a.camera, b.camera) && sameSettings(a.settings, b.settings);
 }
 

@@ -19,10 +19,11 @@ struct LightNode {
     quint64 id = 0;
     QString name;
     LightType type = LightType::Point;
-    glm::vec3 position{0.0f, 1.0f, 0.0f};   ///< Point lights, metres.
-    glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< Directional lights: the way the light travels; spots: their axis.
-    glm::vec3 color{1.0f};                  ///< Linear RGB, each in [0, 1] by convention.
-    float intensity = 1.0f;                 ///< W/sr or W/m^2; the emitted value per channel is color * intensity.
+    glm::vec3 position { 0.0f, 1.0f, 0.0f }; ///< Point lights, metres.
+    glm::vec3 direction { 0.0f, -1.0f,
+        0.0f }; ///< Directional lights: the way the light travels; spots: their axis.
+    glm::vec3 color { 1.0f }; ///< Linear RGB, each in [0, 1] by convention.
+    float intensity = 1.0f; ///< W/sr or W/m^2; the emitted value per channel is color * intensity.
     bool castsShadows = true;
     float spotInnerDeg = 30.0f; ///< Spots: full intensity within this angle of the axis, degrees.
     float spotOuterDeg = 45.0f; ///< Spots: none beyond this angle (at most 90).
@@ -32,15 +33,19 @@ struct LightNode {
     bool isPointLike() const { return type != LightType::Directional; }
     render::PointLight pointLight() const
     {
-        render::PointLight p{position, color * intensity, castsShadows};
+        render::PointLight p { position, color * intensity, castsShadows };
         if (type == LightType::Spot) {
-            p.spotDirection = glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
+            p.spotDirection
+                = glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
             p.spotInnerDeg = spotInnerDeg;
             p.spotOuterDeg = spotOuterDeg;
         }
         return p;
     }
-    render::DirectionalLight directionalLight() const { return {direction, color * intensity, castsShadows}; }
+    render::DirectionalLight directionalLight() const
+    {
+        return { direction, color * intensity, castsShadows };
+    }
 };
 
 } // namespace vct::doc

@@ -75,10 +75,12 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
             }
             if (type == QLatin1String("spot")) {
                 double inner = 0.0, outer = 0.0;
-                if (!reader.readVec3(light, QStringLiteral("direction"), prefix + QStringLiteral(".direction"),
-                        &point.spotDirection)
-                    || !reader.readNumber(light, QStringLiteral("inner_deg"), prefix + QStringLiteral(".inner_deg"), &inner)
-                    || !reader.readNumber(light, QStringLiteral("outer_deg"), prefix + QStringLiteral(".outer_deg"), &outer))
+                if (!reader.readVec3(light, QStringLiteral("direction"),
+                        prefix + QStringLiteral(".direction"), &point.spotDirection)
+                    || !reader.readNumber(
+                        light, QStringLiteral("inner_deg"), prefix + QStringLiteral(".inner_deg"), &inner)
+                    || !reader.readNumber(
+                        light, QStringLiteral("outer_deg"), prefix + QStringLiteral(".outer_deg"), &outer))
                     return failed();
                 if (!(glm::length(point.spotDirection) > 0.0f)) {
                     reader.fail(prefix + QStringLiteral(".direction"), QStringLiteral("must not be zero"));
@@ -86,7 +88,9 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
                 }
                 if (!(inner >= 0.0 && inner <= outer && outer <= 90.0)) {
                     reader.fail(prefix + QStringLiteral(".outer_deg"),
-                        QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2").arg(inner).arg(outer));
+                        QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2")
+                            .arg(inner)
+                            .arg(outer));
                     return failed();
                 }
                 point.spotDirection = glm::normalize(point.spotDirection);

@@ -144,7 +144,8 @@ int loadTexture(ImportState& state, const aiString& reference)
         const QString refusal = state.files->refusalReason(file);
         const QImage image = refusal.isEmpty() ? QImage(file) : QImage();
         if (!refusal.isEmpty())
-            state.report.warnings << QStringLiteral("%1: texture %2 was not read: %3").arg(state.path, file, refusal);
+            state.report.warnings
+                << QStringLiteral("%1: texture %2 was not read: %3").arg(state.path, file, refusal);
         else if (image.isNull())
             state.report.warnings
                 << QStringLiteral("%1: texture %2 is missing or unreadable").arg(state.path, file);
@@ -220,7 +221,8 @@ int sceneMaterial(ImportState& state, unsigned aiIndex)
         convertPhongSurface(source, material);
     material.albedo = sanitize(material.albedo);
     material.specular = sanitize(material.specular);
-    // glTF says whether a material is double-sided (Assimp: AI_MATKEY_TWOSIDED); formats that do not, stay so.
+    // glTF says whether a material is double-sided (Assimp: AI_MATKEY_TWOSIDED); formats that do not, stay
+    // so.
     int twoSided = 1;
     if (source->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS)
         material.doubleSided = twoSided != 0;
@@ -397,10 +399,10 @@ bool ModelImporter::importModel(
     Assimp::Importer importer;
     auto* files = new QtAssimpIOSystem(path, &refusals);
     importer.SetIOHandler(files); // The importer owns and deletes it.
-    // Normals a file lacks are made by smoothing across edges below this angle. Assimp's default (175 degrees)
-    // rounds a box's 90-degree corners, so the Cornell boxes were shaded like pillows: 7x the reference
-    // error, by our path tracer and the VCT renderer alike. 80 degrees keeps creases and smooths curved
-    // meshes, whose neighbouring faces meet at a few degrees.
+    // Normals a file lacks are made by smoothing across edges below this angle. Assimp's default (175
+    // degrees) rounds a box's 90-degree corners, so the Cornell boxes were shaded like pillows: 7x the
+    // reference error, by our path tracer and the VCT renderer alike. 80 degrees keeps creases and smooths
+    // curved meshes, whose neighbouring faces meet at a few degrees.
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
     const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals
         | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure
@@ -472,8 +474,8 @@ namespace Assimp {
 
 void aiAssertViolation(const char* failedExpression, const char* file, int line)
 {
-    throw std::runtime_error(std::string("the model's data is inconsistent (Assimp check failed: ") + failedExpression
-        + " in " + file + ":" + std::to_string(line) + ")");
+    throw std::runtime_error(std::string("the model's data is inconsistent (Assimp check failed: ")
+        + failedExpression + " in " + file + ":" + std::to_string(line) + ")");
 }
 
 } // namespace Assimp

@@ -13,9 +13,10 @@ namespace {
 /** Bytes of one PLY scalar, or 0 for a name that is not a PLY type. */
 int plyTypeSize(const QByteArray& type)
 {
-    static const std::array<std::pair<const char*, int>, 16> types{{{"char", 1}, {"uchar", 1}, {"int8", 1},
-        {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4},
-        {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}}};
+    static const std::array<std::pair<const char*, int>, 16> types { { { "char", 1 }, { "uchar", 1 },
+        { "int8", 1 }, { "uint8", 1 }, { "short", 2 }, { "ushort", 2 }, { "int16", 2 }, { "uint16", 2 },
+        { "int", 4 }, { "uint", 4 }, { "int32", 4 }, { "uint32", 4 }, { "float", 4 }, { "float32", 4 },
+        { "double", 8 }, { "float64", 8 } } };
     for (const auto& [name, size] : types)
         if (type == name)
             return size;
@@ -96,9 +97,12 @@ QString ModelPreflight::checkPly(const QByteArray& bytes, qint64 fileSize)
         if (keyword == "format") {
             if (!format.isEmpty() || !elements.isEmpty())
                 return where + QStringLiteral("'format' must come once, before the elements");
-            if (words.size() != 3 || (words[1] != "ascii" && words[1] != "binary_little_endian" && words[1] != "binary_big_endian")
+            if (words.size() != 3
+                || (words[1] != "ascii" && words[1] != "binary_little_endian"
+                    && words[1] != "binary_big_endian")
                 || words[2] != "1.0")
-                return where + QStringLiteral("unknown format '%1'").arg(QString::fromLatin1(lines[n].trimmed()));
+                return where
+                    + QStringLiteral("unknown format '%1'").arg(QString::fromLatin1(lines[n].trimmed()));
             format = words[1];
         } else if (keyword == "element") {
             if (format.isEmpty())
@@ -107,17 +111,20 @@ QString ModelPreflight::checkPly(const QByteArray& bytes, qint64 fileSize)
             const qint64 count = words.size() == 3 ? words[2].toLongLong(&ok) : -1;
             if (!ok || count < 0 || count > 0x7fffffff)
                 return where + QStringLiteral("an element needs a name and a count from 0 to 2^31-1");
-            elements.push_back({words[1], count, 0, 0});
+            elements.push_back({ words[1], count, 0, 0 });
         } else if (keyword == "property") {
             if (elements.isEmpty())
                 return where + QStringLiteral("a property before any element");
             Element& element = elements.back();
             if (words.size() == 3 && plyTypeSize(words[1]) > 0) {
                 element.minBinaryBytes += plyTypeSize(words[1]);
-            } else if (words.size() == 5 && words[1] == "list" && isIntegerPlyType(words[2]) && plyTypeSize(words[3]) > 0) {
+            } else if (words.size() == 5 && words[1] == "list" && isIntegerPlyType(words[2])
+                && plyTypeSize(words[3]) > 0) {
                 element.minBinaryBytes += plyTypeSize(words[2]);
             } else {
-                return where + QStringLiteral("not a valid property: '%1'").arg(QString::fromLatin1(lines[n].trimmed()));
+                return where
+                    + QStringLiteral("not a valid property: '%1'")
+                          .arg(QString::fromLatin1(lines[n].trimmed()));
             }
             ++element.properties;
         } else {
@@ -141,7 +148,8 @@ QString ModelPreflight::checkPly(const QByteArray& bytes, qint64 fileSize)
                 .arg(element.count);
         needed += element.count * (format == "ascii" ? element.properties : element.minBinaryBytes);
         if (needed > body)
-            return QStringLiteral("PLY element '%1' claims %2 instances, more than the %3 bytes of data can hold")
+            return QStringLiteral(
+                "PLY element '%1' claims %2 instances, more than the %3 bytes of data can hold")
                 .arg(QString::fromLatin1(element.name.left(32)))
                 .arg(element.count)
                 .arg(qMax<qint64>(body, 0));
@@ -166,7 +174,9 @@ QString ModelPreflight::checkJsonNesting(const QByteArray& json)
             inString = true;
         } else if (c == '{' || c == '[') {
             if (++depth > kMaxJsonDepth)
-                return QStringLiteral("JSON nests deeper than %1 levels at byte %2").arg(kMaxJsonDepth).arg(i);
+                return QStringLiteral("JSON nests deeper than %1 levels at byte %2")
+                    .arg(kMaxJsonDepth)
+                    .arg(i);
         } else if (c == '}' || c == ']') {
             if (--depth < 0)
                 return QStringLiteral("JSON closes a bracket it never opened at byte %1").arg(i);

@@ -7,13 +7,15 @@ namespace vct::doc {
 
 /**
  * Checks a model file's bytes before Assimp sees them. Assimp 5.2 trusts headers: a damaged PLY header made
- * it read past its buffer (tests/fuzz/corpus/model/regression-ply-header-overread.ply), a PLY that promises 2^31 vertices made it allocate
- * for them, and its recursive JSON parser overflows the stack on deeply nested glTF. Each check refuses
- * such a file with a message that says what is wrong, so the importer can fail cleanly instead.
+ * it read past its buffer (tests/fuzz/corpus/model/regression-ply-header-overread.ply), a PLY that promises
+ * 2^31 vertices made it allocate for them, and its recursive JSON parser overflows the stack on deeply nested
+ * glTF. Each check refuses such a file with a message that says what is wrong, so the importer can fail
+ * cleanly instead.
  */
 class ModelPreflight {
 public:
-    /** Deepest JSON nesting a glTF may use; real files stay below 10, the stack overflows in the thousands. */
+    /** Deepest JSON nesting a glTF may use; real files stay below 10, the stack overflows in the thousands.
+     */
     static constexpr int kMaxJsonDepth = 64;
     /** Bytes of a PLY header; real headers are a few hundred bytes, Assimp reads header lines unbounded. */
     static constexpr int kMaxPlyHeaderBytes = 64 * 1024;

@@ -10,9 +10,9 @@ namespace vct::doc {
  * world = matrix() * imported. Translation in metres, rotation as XYZ Euler angles in degrees.
  */
 struct NodeTransform {
-    glm::vec3 translation{0.0f};
-    glm::vec3 rotationDeg{0.0f};
-    glm::vec3 scale{1.0f};
+    glm::vec3 translation { 0.0f };
+    glm::vec3 rotationDeg { 0.0f };
+    glm::vec3 scale { 1.0f };
 
     /** T * Rz * Ry * Rx * S. */
     glm::mat4 matrix() const;

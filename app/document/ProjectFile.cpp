@@ -32,15 +32,18 @@ bool isModelPath(const QString& spec)
 
 QJsonArray toArray(const glm::vec3& v)
 {
-    return QJsonArray{double(v.x), double(v.y), double(v.z)};
+    return QJsonArray { double(v.x), double(v.y), double(v.z) };
 }
 
 QString lightTypeName(LightType type)
 {
     switch (type) {
-    case LightType::Directional: return QStringLiteral("directional");
-    case LightType::Spot: return QStringLiteral("spot");
-    case LightType::Point: break;
+    case LightType::Directional:
+        return QStringLiteral("directional");
+    case LightType::Spot:
+        return QStringLiteral("spot");
+    case LightType::Point:
+        break;
     }
     return QStringLiteral("point");
 }
@@ -113,8 +116,8 @@ public:
         return true;
     }
 
-    bool readFloat(const QJsonObject& object, const QString& key, const QString& fieldPath, float minimum,
-        float* value)
+    bool readFloat(
+        const QJsonObject& object, const QString& key, const QString& fieldPath, float minimum, float* value)
     {
         double d = 0.0;
         if (!readNumber(object, key, fieldPath, &d))
@@ -127,7 +130,8 @@ public:
         return true;
     }
 
-    bool readFiniteVec3(const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
+    bool readFiniteVec3(
+        const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
     {
         glm::vec3 v(0.0f);
         if (!readVec3(object, key, fieldPath, &v))
@@ -142,13 +146,20 @@ public:
     static QString describe(const QJsonValue& v)
     {
         switch (v.type()) {
-        case QJsonValue::Null: return QStringLiteral("null");
-        case QJsonValue::Bool: return QStringLiteral("a boolean");
-        case QJsonValue::Double: return QStringLiteral("a number");
-        case QJsonValue::String: return QStringLiteral("a string");
-        case QJsonValue::Array: return QStringLiteral("an array");
-        case QJsonValue::Object: return QStringLiteral("an object");
-        case QJsonValue::Undefined: break;
+        case QJsonValue::Null:
+            return QStringLiteral("null");
+        case QJsonValue::Bool:
+            return QStringLiteral("a boolean");
+        case QJsonValue::Double:
+            return QStringLiteral("a number");
+        case QJsonValue::String:
+            return QStringLiteral("a string");
+        case QJsonValue::Array:
+            return QStringLiteral("an array");
+        case QJsonValue::Object:
+            return QStringLiteral("an object");
+        case QJsonValue::Undefined:
+            break;
         }
         return QStringLiteral("nothing (missing)");
     }
@@ -157,7 +168,8 @@ public:
 bool readSources(ProjectReader& r, const QJsonObject& root, const QString& projectDir, DocumentState& out)
 {
     QJsonArray array;
-    if (!r.readArray(root, QStringLiteral("sources"), QStringLiteral("sources"), ProjectFile::kMaxSources, &array))
+    if (!r.readArray(
+            root, QStringLiteral("sources"), QStringLiteral("sources"), ProjectFile::kMaxSources, &array))
         return false;
     const QDir dir(projectDir);
     for (qsizetype i = 0; i < array.size(); ++i) {
@@ -175,10 +187,11 @@ bool readSources(ProjectReader& r, const QJsonObject& root, const QString& proje
             const QFileInfo model(spec);
             if (!model.isFile())
                 return r.fail(path + QStringLiteral(".spec"),
-                    (model.exists() ? QStringLiteral("model '%1' is not a regular file") : QStringLiteral("model file '%1' not found"))
+                    (model.exists() ? QStringLiteral("model '%1' is not a regular file")
+                                    : QStringLiteral("model file '%1' not found"))
                         .arg(QDir::toNativeSeparators(spec)));
         }
-        out.sources.push_back({spec});
+        out.sources.push_back({ spec });
     }
     return true;
 }
@@ -186,7 +199,8 @@ bool readSources(ProjectReader& r, const QJsonObject& root, const QString& proje
 bool readMaterials(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 {
     QJsonArray array;
-    if (!r.readArray(root, QStringLiteral("materials"), QStringLiteral("materials"), ProjectFile::kMaxNodes, &array))
+    if (!r.readArray(
+            root, QStringLiteral("materials"), QStringLiteral("materials"), ProjectFile::kMaxNodes, &array))
         return false;
     for (qsizetype i = 0; i < array.size(); ++i) {
         const QString path = QStringLiteral("materials[%1].").arg(i);
@@ -200,7 +214,8 @@ bool readMaterials(ProjectReader& r, const QJsonObject& root, DocumentState& out
             || !r.readFloat(o, "shininess", path + "shininess", 0.0f, &m.shininess)
             || !r.readInt(o, "albedo_texture", path + "albedo_texture", -1, INT_MAX, &m.albedoTexture)
             // Absent from projects saved before single-sided materials existed: both sides, as then.
-            || (o.contains(QStringLiteral("double_sided")) && !r.readBool(o, "double_sided", path + "double_sided", &m.doubleSided)))
+            || (o.contains(QStringLiteral("double_sided"))
+                && !r.readBool(o, "double_sided", path + "double_sided", &m.doubleSided)))
             return false;
         m.name = name.toStdString();
         out.materials.push_back(m);
@@ -238,7 +253,8 @@ bool readNodes(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 {
     QJsonArray array;
-    if (!r.readArray(root, QStringLiteral("lights"), QStringLiteral("lights"), ProjectFile::kMaxNodes, &array))
+    if (!r.readArray(
+            root, QStringLiteral("lights"), QStringLiteral("lights"), ProjectFile::kMaxNodes, &array))
         return false;
     for (qsizetype i = 0; i < array.size(); ++i) {
         const QString path = QStringLiteral("lights[%1].").arg(i);
@@ -246,7 +262,8 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
         QString type;
         LightNode l;
         if (!r.readObject(array[i], path.chopped(1), &o) || !r.readId(o, "id", path + "id", &l.id)
-            || !r.readString(o, "name", path + "name", &l.name) || !r.readString(o, "type", path + "type", &type))
+            || !r.readString(o, "name", path + "name", &l.name)
+            || !r.readString(o, "type", path + "type", &type))
             return false;
         if (type == QStringLiteral("point"))
             l.type = LightType::Point;
@@ -268,8 +285,10 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
                 || !r.readFloat(o, "outer_deg", path + "outer_deg", 0.0f, &l.spotOuterDeg))
                 return false;
             if (l.spotOuterDeg > 90.0f || l.spotInnerDeg > l.spotOuterDeg)
-                return r.fail(path + "outer_deg", QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2")
-                                                      .arg(l.spotInnerDeg).arg(l.spotOuterDeg));
+                return r.fail(path + "outer_deg",
+                    QStringLiteral("a spot needs 0 <= inner_deg <= outer_deg <= 90, found %1 and %2")
+                        .arg(l.spotInnerDeg)
+                        .arg(l.spotOuterDeg));
         }
         out.lights.push_back(l);
     }
@@ -280,12 +299,15 @@ bool readCamera(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 {
     QJsonObject o;
     render::Camera c;
-    if (!r.readObject(root.value("camera"), "camera", &o) || !r.readFiniteVec3(o, "position", "camera.position", &c.position)
+    if (!r.readObject(root.value("camera"), "camera", &o)
+        || !r.readFiniteVec3(o, "position", "camera.position", &c.position)
         || !r.readFiniteVec3(o, "look_at", "camera.look_at", &c.lookAt)
-        || !r.readFiniteVec3(o, "up", "camera.up", &c.up) || !r.readFloat(o, "fov_y_deg", "camera.fov_y_deg", 0.0f, &c.fovYDeg))
+        || !r.readFiniteVec3(o, "up", "camera.up", &c.up)
+        || !r.readFloat(o, "fov_y_deg", "camera.fov_y_deg", 0.0f, &c.fovYDeg))
         return false;
     if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f))
-        return r.fail("camera.fov_y_deg", QStringLiteral("must be between 0 and 180 degrees, found %1").arg(c.fovYDeg));
+        return r.fail(
+            "camera.fov_y_deg", QStringLiteral("must be between 0 and 180 degrees, found %1").arg(c.fovYDeg));
     // Optional: hand-written projects may leave the near plane at its default.
     if (r.hasField(o, "near_plane")) {
         if (!r.readFloat(o, "near_plane", "camera.near_plane", 0.0f, &c.nearPlane))
@@ -306,7 +328,9 @@ bool readSettings(ProjectReader& r, const QJsonObject& root, DocumentState& out)
     for (auto it = o.begin(); it != o.end(); ++it) {
         const QString path = QStringLiteral("settings.%1").arg(it.key());
         if (!it.value().isString())
-            return r.fail(path, QStringLiteral("expected the value as a string, found %1").arg(ProjectReader::describe(it.value())));
+            return r.fail(path,
+                QStringLiteral("expected the value as a string, found %1")
+                    .arg(ProjectReader::describe(it.value())));
         const std::string problem = settings.set(it.key().toStdString(), it.value().toString().toStdString());
         if (!problem.empty())
             return r.fail(path, QString::fromStdString(problem));
@@ -345,24 +369,27 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
     QJsonArray sources;
     for (const SceneSource& source : state.sources) {
         const QString spec = isModelPath(source.spec) ? dir.relativeFilePath(source.spec) : source.spec;
-        sources.append(QJsonObject{{"spec", spec}});
+        sources.append(QJsonObject { { "spec", spec } });
     }
     QJsonArray materials;
     for (const render::Material& m : state.materials)
-        materials.append(QJsonObject{{"name", QString::fromStdString(m.name)}, {"albedo", toArray(m.albedo)},
-            {"emission", toArray(m.emission)}, {"specular", toArray(m.specular)}, {"shininess", double(m.shininess)},
-            {"albedo_texture", m.albedoTexture}, {"double_sided", m.doubleSided}});
+        materials.append(QJsonObject { { "name", QString::fromStdString(m.name) },
+            { "albedo", toArray(m.albedo) }, { "emission", toArray(m.emission) },
+            { "specular", toArray(m.specular) }, { "shininess", double(m.shininess) },
+            { "albedo_texture", m.albedoTexture }, { "double_sided", m.doubleSided } });
     QJsonArray nodes;
     for (const SceneNode& n : state.nodes)
-        nodes.append(QJsonObject{{"id", qint64(n.id)}, {"name", n.name}, {"source", n.source}, {"mesh", n.mesh},
-            {"material", n.material}, {"translation", toArray(n.transform.translation)},
-            {"rotation_deg", toArray(n.transform.rotationDeg)}, {"scale", toArray(n.transform.scale)},
-            {"dynamic", n.dynamic}, {"visible", n.visible}});
+        nodes.append(QJsonObject { { "id", qint64(n.id) }, { "name", n.name }, { "source", n.source },
+            { "mesh", n.mesh }, { "material", n.material },
+            { "translation", toArray(n.transform.translation) },
+            { "rotation_deg", toArray(n.transform.rotationDeg) }, { "scale", toArray(n.transform.scale) },
+            { "dynamic", n.dynamic }, { "visible", n.visible } });
     QJsonArray lights;
     for (const LightNode& l : state.lights) {
-        QJsonObject light{{"id", qint64(l.id)}, {"name", l.name}, {"type", lightTypeName(l.type)},
-            {"position", toArray(l.position)}, {"direction", toArray(l.direction)}, {"color", toArray(l.color)},
-            {"intensity", double(l.intensity)}, {"shadows", l.castsShadows}};
+        QJsonObject light { { "id", qint64(l.id) }, { "name", l.name }, { "type", lightTypeName(l.type) },
+            { "position", toArray(l.position) }, { "direction", toArray(l.direction) },
+            { "color", toArray(l.color) }, { "intensity", double(l.intensity) },
+            { "shadows", l.castsShadows } };
         if (l.type == LightType::Spot) {
             light["inner_deg"] = double(l.spotInnerDeg);
             light["outer_deg"] = double(l.spotOuterDeg);
@@ -370,15 +397,15 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
         lights.append(light);
     }
     const render::Camera& c = state.camera;
-    const QJsonObject camera{{"position", toArray(c.position)}, {"look_at", toArray(c.lookAt)},
-        {"up", toArray(c.up)}, {"fov_y_deg", double(c.fovYDeg)}, {"near_plane", double(c.nearPlane)}};
+    const QJsonObject camera { { "position", toArray(c.position) }, { "look_at", toArray(c.lookAt) },
+        { "up", toArray(c.up) }, { "fov_y_deg", double(c.fovYDeg) }, { "near_plane", double(c.nearPlane) } };
     QJsonObject settings;
     for (const auto& row : state.settings.describe())
         settings.insert(QString::fromStdString(row[0]), QString::fromStdString(row[1]));
 
-    const QJsonObject root{{"format", QString::fromLatin1(kFormat)}, {"version", kVersion}, {"sources", sources},
-        {"materials", materials}, {"nodes", nodes}, {"lights", lights}, {"camera", camera}, {"settings", settings},
-        {"next_id", qint64(state.nextId)}};
+    const QJsonObject root { { "format", QString::fromLatin1(kFormat) }, { "version", kVersion },
+        { "sources", sources }, { "materials", materials }, { "nodes", nodes }, { "lights", lights },
+        { "camera", camera }, { "settings", settings }, { "next_id", qint64(state.nextId) } };
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -398,12 +425,15 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
     if (!json.isValidUtf8())
         return fail(QString(), QStringLiteral("is not valid UTF-8 text"));
     if (nestingDepth(json, kMaxNesting) > kMaxNesting)
-        return fail(QString(), QStringLiteral("arrays or objects nest deeper than %1 levels").arg(kMaxNesting));
+        return fail(
+            QString(), QStringLiteral("arrays or objects nest deeper than %1 levels").arg(kMaxNesting));
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
         return fail(QString(),
-            QStringLiteral("invalid JSON at offset %1: %2").arg(parseError.offset).arg(parseError.errorString()));
+            QStringLiteral("invalid JSON at offset %1: %2")
+                .arg(parseError.offset)
+                .arg(parseError.errorString()));
     if (!document.isObject())
         return fail(QString(), QStringLiteral("expected a JSON object at the top level"));
     const QJsonObject root = document.object();
@@ -413,7 +443,8 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
         return failed();
     if (format != QLatin1String(kFormat))
         return fail("format",
-            QStringLiteral("expected \"%1\", found \"%2\": not a VCT Studio project").arg(QLatin1String(kFormat), format));
+            QStringLiteral("expected \"%1\", found \"%2\": not a VCT Studio project")
+                .arg(QLatin1String(kFormat), format));
     int version = 0;
     if (!r.readInt(root, "version", "version", 1, INT_MAX, &version))
         return failed();
@@ -425,9 +456,9 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
                 .arg(kVersion));
 
     DocumentState result;
-    if (!readSources(r, root, projectDir, result) || !readMaterials(r, root, result) || !readNodes(r, root, result)
-        || !readLights(r, root, result) || !readCamera(r, root, result) || !readSettings(r, root, result)
-        || !readIds(r, root, result))
+    if (!readSources(r, root, projectDir, result) || !readMaterials(r, root, result)
+        || !readNodes(r, root, result) || !readLights(r, root, result) || !readCamera(r, root, result)
+        || !readSettings(r, root, result) || !readIds(r, root, result))
         return failed();
     *state = std::move(result);
     return true;
@@ -488,7 +519,8 @@ bool ProjectFile::save(const QString& path, const DocumentState& state, QString*
         const int osError = errno;
         const QString reason = osError != 0 ? qt_error_string(osError) : file.errorString();
         file.cancelWriting();
-        return fail(QStringLiteral("cannot save: writing failed (%1); any old file is unchanged").arg(reason));
+        return fail(
+            QStringLiteral("cannot save: writing failed (%1); any old file is unchanged").arg(reason));
     }
     if (!file.commit())
         return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));

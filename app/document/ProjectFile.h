@@ -32,13 +32,13 @@ public:
     static constexpr const char* kFormat = "vct-studio-project";
     static constexpr int kVersion = 1;
     static constexpr qint64 kMaxFileBytes = 64ll * 1024 * 1024; ///< Larger files are refused unread.
-    static constexpr int kMaxNodes = 1000000;                    ///< Also the cap for lights and materials.
+    static constexpr int kMaxNodes = 1000000; ///< Also the cap for lights and materials.
     static constexpr int kMaxSources = 100000;
     static constexpr int kMaxNesting = 64; ///< Deepest [ and { nesting accepted (the format needs 4).
 
     /**
-     * Reads the project at `path` into `state`. On failure returns false, leaves `state` unchanged and writes a
-     * message naming the file and the field to `error`. Model files the sources name must exist.
+     * Reads the project at `path` into `state`. On failure returns false, leaves `state` unchanged and writes
+     * a message naming the file and the field to `error`. Model files the sources name must exist.
      */
     static bool load(const QString& path, DocumentState* state, QString* error);
     /**

@@ -26,9 +26,11 @@ void QtAssimpIOStream::countOperation()
     // (found by fuzzing a PLY header). Past a budget no real parse reaches, throw: Assimp's importer catches
     // it and the import ends with this error instead of hanging the caller.
     if (m_budget == 0)
-        m_budget = kOperationBudget + std::uint64_t(std::max<qint64>(m_file.size(), 0)); // one per byte at most
+        m_budget
+            = kOperationBudget + std::uint64_t(std::max<qint64>(m_file.size(), 0)); // one per byte at most
     if (++m_operations > m_budget)
-        throw std::runtime_error("the importer kept re-reading the file without progress; the file is probably damaged");
+        throw std::runtime_error(
+            "the importer kept re-reading the file without progress; the file is probably damaged");
 }
 
 size_t QtAssimpIOStream::Read(void* buffer, size_t size, size_t count)

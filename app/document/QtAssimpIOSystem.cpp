@@ -58,7 +58,8 @@ Assimp::IOStream* QtAssimpIOSystem::Open(const char* path, const char* mode)
     const QString name = QString::fromUtf8(path);
     if (const QString reason = refusalReason(name); !reason.isEmpty()) {
         if (m_refusals)
-            m_refusals->append(QStringLiteral("'%1' was not read: %2").arg(QDir::toNativeSeparators(name), reason));
+            m_refusals->append(
+                QStringLiteral("'%1' was not read: %2").arg(QDir::toNativeSeparators(name), reason));
         return nullptr;
     }
     auto stream = std::make_unique<QtAssimpIOStream>(name);

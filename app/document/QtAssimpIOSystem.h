@@ -30,8 +30,8 @@ public:
     QString refusalReason(const QString& path) const;
 
 private:
-    QString m_root;           ///< The model's folder, canonical, with a trailing '/'.
-    QStringList* m_refusals;  ///< Owned by the caller, who reports them.
+    QString m_root; ///< The model's folder, canonical, with a trailing '/'.
+    QStringList* m_refusals; ///< Owned by the caller, who reports them.
 };
 
 } // namespace vct::doc

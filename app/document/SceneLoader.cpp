@@ -89,7 +89,8 @@ render::Camera SceneLoader::frameBounds(const render::Aabb& bounds, float fovYDe
 
 float SceneLoader::nearPlaneFor(const render::Aabb& bounds)
 {
-    return bounds.isEmpty() ? render::Camera{}.nearPlane : std::max(1e-3f * glm::length(bounds.size()), 1e-30f);
+    return bounds.isEmpty() ? render::Camera {}.nearPlane
+                            : std::max(1e-3f * glm::length(bounds.size()), 1e-30f);
 }
 
 } // namespace vct::doc

@@ -12,7 +12,8 @@ namespace vct::sync {
 namespace {
 
 // Moeller-Trumbore; returns the distance or a negative value on a miss.
-float intersect(const glm::vec3& o, const glm::vec3& d, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
+float intersect(
+    const glm::vec3& o, const glm::vec3& d, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
 {
     const glm::vec3 e1 = b - a, e2 = c - a;
     const glm::vec3 p = glm::cross(d, e2);
@@ -76,7 +77,7 @@ PickResult pickNode(const doc::Document& document, const glm::vec3& origin, cons
                 positions[mesh.indices[i + 2]]);
             if (t > 0.0f && t < bestDistance) {
                 bestDistance = t;
-                best = {int(n), t, origin + dir * t};
+                best = { int(n), t, origin + dir * t };
             }
         }
     }

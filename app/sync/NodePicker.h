@@ -10,9 +10,9 @@ namespace vct::sync {
 
 /** What a ray from the camera hits first. */
 struct PickResult {
-    int node = -1;      ///< -1: nothing
+    int node = -1; ///< -1: nothing
     float distance = 0; ///< metres along the ray
-    glm::vec3 point{0.0f};
+    glm::vec3 point { 0.0f };
 };
 
 /**

@@ -53,15 +53,24 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
     std::vector<int> materials, nodes;
     for (const doc::ChangeEvent& event : m_pending) {
         switch (event.kind) {
-        case Kind::Lights: lights = true; break;
-        case Kind::Settings: settings = true; break;
-        case Kind::Material: materials.push_back(event.index); break;
-        case Kind::NodeTransform: nodes.push_back(event.index); break;
+        case Kind::Lights:
+            lights = true;
+            break;
+        case Kind::Settings:
+            settings = true;
+            break;
+        case Kind::Material:
+            materials.push_back(event.index);
+            break;
+        case Kind::NodeTransform:
+            nodes.push_back(event.index);
+            break;
         case Kind::NodeProperty:
             // The dynamic flag decides which voxel layer a mesh lives in: rebuild the scene.
             renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
             break;
-        default: break;
+        default:
+            break;
         }
     }
     m_pending.clear();

@@ -23,8 +23,8 @@ std::string eglErrorText(const char* step)
 
 std::unique_ptr<EglHeadlessContext> EglHeadlessContext::create(std::string& error)
 {
-    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto getPlatformDisplay
+        = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay) {
         error = "eglGetPlatformDisplayEXT is not available";
         return nullptr;
@@ -44,8 +44,8 @@ std::unique_ptr<EglHeadlessContext> EglHeadlessContext::create(std::string& erro
         eglTerminate(display);
         return nullptr;
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = { EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
     EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) {
         error = eglErrorText("eglCreateContext(GL 4.5 core)");
@@ -68,7 +68,8 @@ EglHeadlessContext::~EglHeadlessContext()
         eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (m_context)
             eglDestroyContext(m_display, m_context);
-        // eglTerminate would pull the display from under any other context in this process (tests make several).
+        // eglTerminate would pull the display from under any other context in this process (tests make
+        // several).
     }
 }
 

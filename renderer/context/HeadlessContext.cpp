@@ -36,14 +36,16 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const std::string& back
         return nullptr;
     }
     if (!gl::loadGl(context->procAddressFunction())) {
-        error = "the " + backend + " context does not provide OpenGL 4.5 core (GL_VERSION " + glString(GL_VERSION) + ")";
+        error = "the " + backend + " context does not provide OpenGL 4.5 core (GL_VERSION "
+            + glString(GL_VERSION) + ")";
         return nullptr;
     }
     context->m_glInfo = glString(GL_VERSION) + ", " + glString(GL_RENDERER);
     return context;
 }
 
-std::unique_ptr<HeadlessContext> HeadlessContext::createPreferring(const std::string& backend, bool chosen, std::string& error)
+std::unique_ptr<HeadlessContext> HeadlessContext::createPreferring(
+    const std::string& backend, bool chosen, std::string& error)
 {
     auto context = create(backend, error);
     if (context || chosen)

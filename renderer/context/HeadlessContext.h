@@ -27,7 +27,8 @@ public:
      * second choice, since a machine without EGL's surfaceless platform may still have OSMesa. The error then
      * names both attempts.
      */
-    static std::unique_ptr<HeadlessContext> createPreferring(const std::string& backend, bool chosen, std::string& error);
+    static std::unique_ptr<HeadlessContext> createPreferring(
+        const std::string& backend, bool chosen, std::string& error);
 
 private:
     std::string m_glInfo;

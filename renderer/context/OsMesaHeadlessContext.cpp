@@ -16,8 +16,9 @@ void* osmesaLookup(const char* name)
 
 std::unique_ptr<OsMesaHeadlessContext> OsMesaHeadlessContext::create(std::string& error)
 {
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-        OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attributes[]
+        = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8, OSMESA_PROFILE,
+              OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0 };
     OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!context) {
         error = "OSMesaCreateContextAttribs(GL 4.5 core) returned no context";

@@ -64,9 +64,10 @@ bool rayMeetsBox(const glm::dvec3& origin, const glm::dvec3& invDir, const Aabb&
 
 } // namespace
 
-ClosedSurface::ClosedSurface(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
-    const std::vector<MeshCluster>& clusters)
-    : m_indices(indices), m_clusters(clusters)
+ClosedSurface::ClosedSurface(const std::vector<glm::vec3>& positions,
+    const std::vector<std::uint32_t>& indices, const std::vector<MeshCluster>& clusters)
+    : m_indices(indices)
+    , m_clusters(clusters)
 {
     const std::size_t triangles = indices.size() / 3;
     if (triangles == 0)
@@ -94,17 +95,17 @@ ClosedSurface::ClosedSurface(const std::vector<glm::vec3>& positions, const std:
     std::vector<std::uint32_t> parent(m_positions.size());
     std::iota(parent.begin(), parent.end(), 0u);
     for (std::size_t t = 0; t < triangles; ++t) {
-        const std::uint32_t v[3] = {m_indices[3 * t], m_indices[3 * t + 1], m_indices[3 * t + 2]};
+        const std::uint32_t v[3] = { m_indices[3 * t], m_indices[3 * t + 1], m_indices[3 * t + 2] };
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
             return; // a degenerate triangle's edges pair with nothing sensible
         for (int k = 0; k < 3; ++k) {
-            if (++edges[{v[k], v[(k + 1) % 3]}] > 1)
+            if (++edges[{ v[k], v[(k + 1) % 3] }] > 1)
                 return; // the same directed edge twice: not a consistently oriented 2-manifold
             parent[findRoot(parent, v[k])] = findRoot(parent, v[(k + 1) % 3]);
         }
     }
     for (const auto& [edge, count] : edges)
-        if (edges.find({edge.to, edge.from}) == edges.end())
+        if (edges.find({ edge.to, edge.from }) == edges.end())
             return; // an open edge
     // Signed volume per connected part (divergence theorem): every part must enclose positive volume.
     std::unordered_map<std::uint32_t, double> volume;
@@ -125,8 +126,9 @@ std::optional<int> ClosedSurface::windingNumber(const glm::vec3& point) const
     if (!m_solid)
         return std::nullopt;
     // Directions no modelled surface is likely to line up with; a graze on one tries the next.
-    static const glm::dvec3 kDirections[3] = {glm::normalize(glm::dvec3(0.5773, 0.6128, 0.5398)),
-        glm::normalize(glm::dvec3(-0.3721, 0.8264, -0.4226)), glm::normalize(glm::dvec3(0.7071, -0.3162, -0.6325))};
+    static const glm::dvec3 kDirections[3] = { glm::normalize(glm::dvec3(0.5773, 0.6128, 0.5398)),
+        glm::normalize(glm::dvec3(-0.3721, 0.8264, -0.4226)),
+        glm::normalize(glm::dvec3(0.7071, -0.3162, -0.6325)) };
     const glm::dvec3 origin(point);
     for (const glm::dvec3& dir : kDirections) {
         const glm::dvec3 invDir = 1.0 / dir;
@@ -135,9 +137,11 @@ std::optional<int> ClosedSurface::windingNumber(const glm::vec3& point) const
         for (const MeshCluster& cluster : m_clusters) {
             if (grazed || !rayMeetsBox(origin, invDir, cluster.bounds))
                 continue;
-            for (std::uint32_t i = cluster.firstIndex; i + 2 < cluster.firstIndex + cluster.indexCount; i += 3) {
+            for (std::uint32_t i = cluster.firstIndex; i + 2 < cluster.firstIndex + cluster.indexCount;
+                 i += 3) {
                 const glm::dvec3& a = m_positions[m_indices[i]];
-                const glm::dvec3 e1 = m_positions[m_indices[i + 1]] - a, e2 = m_positions[m_indices[i + 2]] - a;
+                const glm::dvec3 e1 = m_positions[m_indices[i + 1]] - a,
+                                 e2 = m_positions[m_indices[i + 2]] - a;
                 // Moeller-Trumbore, in double precision.
                 const glm::dvec3 p = glm::cross(dir, e2);
                 const double det = glm::dot(e1, p);

@@ -22,7 +22,8 @@ std::vector<glm::vec3> coneAxes(int count)
         }
         return axes;
     }
-    // Points of a Fibonacci spiral mapped to the hemisphere with cosine density: more cones where the lobe weighs more.
+    // Points of a Fibonacci spiral mapped to the hemisphere with cosine density: more cones where the lobe
+    // weighs more.
     const float golden = glm::pi<float>() * (3.0f - std::sqrt(5.0f));
     for (int i = 0; i < count; ++i) {
         const float r = std::sqrt((float(i) + 0.5f) / float(count));

@@ -18,7 +18,8 @@ namespace vct::render {
  */
 class FiniteCheck {
 public:
-    std::vector<NonFiniteCount> run(const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels);
+    std::vector<NonFiniteCount> run(
+        const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels);
 
 private:
     std::uint64_t count(const gl::Texture& texture, int level);

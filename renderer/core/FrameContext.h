@@ -23,14 +23,14 @@ class ConeSampleCounter;
 struct ChangeVersions {
     std::uint64_t staticGeometry = 1; ///< Static meshes, their materials, or the grid.
     std::uint64_t dynamicGeometry = 1;
-    std::uint64_t staticMaterials = 0;  ///< Albedo/emission of a material a static mesh uses: voxels only.
+    std::uint64_t staticMaterials = 0; ///< Albedo/emission of a material a static mesh uses: voxels only.
     std::uint64_t dynamicMaterials = 0; ///< The same for dynamic meshes.
 
     /** What the static and the dynamic voxel layers depend on; each grows whenever one of its parts does. */
     std::uint64_t staticVoxels() const { return staticGeometry + staticMaterials; }
     std::uint64_t dynamicVoxels() const { return dynamicGeometry + dynamicMaterials; }
     std::uint64_t lightPlacement = 1; ///< Light count, positions, directions, shadow flags: shadow maps.
-    std::uint64_t lightValues = 1;    ///< Anything about lights, intensities included: injection.
+    std::uint64_t lightValues = 1; ///< Anything about lights, intensities included: injection.
     std::uint64_t shading = 1; ///< Settings that change injection (emission toggle).
 };
 
@@ -47,12 +47,12 @@ struct FrameContext {
     /// World bounds of the static meshes whose material changed since the last frame (their voxels only).
     Aabb staticMaterialEdits;
     Camera camera;
-    glm::mat4 view{1.0f};
-    glm::mat4 projection{1.0f};
+    glm::mat4 view { 1.0f };
+    glm::mat4 projection { 1.0f };
     /// Full-resolution pixel (x, y, 1) to the world-space ray through it whose component along the camera's
     /// forward axis is 1: a surface at view depth z is camera.position + pixelToRay * (x, y, 1) * z
     /// (shaders/common/GBufferSurface.glsl).
-    glm::mat3 pixelToRay{1.0f};
+    glm::mat3 pixelToRay { 1.0f };
     /// Set only while vct-bench perf counts the cone pass's 3D texture fetches (an untimed shader variant).
     ConeSampleCounter* coneSampleCounter = nullptr;
     /// At most this many bounce iterations a frame (Renderer::setBounceIterationsPerFrame); 0 = all of them.

@@ -3,9 +3,9 @@
 #include "core/OccupiedCellList.h"
 #include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
-#include "scene/Aabb.h"
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
+#include "scene/Aabb.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -30,14 +30,15 @@ struct VoxelVolume {
     /// r32f atlas of sums written with imageAtomicAdd (albedo rgb, count, normal xyz, emission rgb),
     /// 4n x 3n x n: a 4 x 3 block of slots per voxel (common/VoxelAccumulators.glsl).
     gl::Texture accumulators;
-    gl::Texture staticAlbedo, staticNormal, staticEmission; ///< Static meshes only, kept while dynamic ones move.
-    gl::Texture albedo;   ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
-    gl::Texture normal;   ///< rgba16f: averaged unit normal (zero where normals cancel).
+    gl::Texture staticAlbedo, staticNormal,
+        staticEmission; ///< Static meshes only, kept while dynamic ones move.
+    gl::Texture albedo; ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
+    gl::Texture normal; ///< rgba16f: averaged unit normal (zero where normals cancel).
     gl::Texture emission; ///< rgba16f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
-    /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along that
-    /// axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones trace it
-    /// (common/AreaLights.glsl); built by light injection when there are area lights.
+    /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along
+    /// that axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones
+    /// trace it (common/AreaLights.glsl); built by light injection when there are area lights.
     gl::Texture opacity;
     std::uint64_t opacityVersion = 0; ///< the materialsVersion `opacity` was built for
     /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid
@@ -48,18 +49,19 @@ struct VoxelVolume {
     /// anisotropic. Empty otherwise. Cones sample these when present.
     gl::Texture bounced;
     gl::Texture bouncedDirectional;
-    /// The bounce iteration's gather, one texel per cell of RenderSettings::bounceCellSize^3 voxels, laid out as
-    /// the irradiance cache's (rgba16f: sum_i w_i L_i along the cell normal, against it for two-sided cells, and
-    /// the cell normal with w = 0 none, 1 one-sided, 2 two-sided), but over every occupied cell.
+    /// The bounce iteration's gather, one texel per cell of RenderSettings::bounceCellSize^3 voxels, laid out
+    /// as the irradiance cache's (rgba16f: sum_i w_i L_i along the cell normal, against it for two-sided
+    /// cells, and the cell normal with w = 0 none, 1 one-sided, 2 two-sided), but over every occupied cell.
     gl::Texture bounceIrradiance;
     gl::Texture bounceIrradianceBack;
     gl::Texture bounceCellNormal;
-    /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of RenderSettings::irradianceCellSize^3
-    /// voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones gathered from the cell's surface along
-    /// its normal (irradiance) and, for two-sided cells, against it (irradianceBack), a = ambient visibility,
-    /// a = -1 where not gathered; irradianceNormal: the cell normal, w = 0 none, 1 one-sided, 2 two-sided.
-    /// Only cells some traced pixel looks up are gathered: irradianceRequested (r32ui) is 1 where a cell was
-    /// gathered for the current voxel light, 0 elsewhere, where the three hold their cleared values.
+    /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of
+    /// RenderSettings::irradianceCellSize^3 voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones
+    /// gathered from the cell's surface along its normal (irradiance) and, for two-sided cells, against it
+    /// (irradianceBack), a = ambient visibility, a = -1 where not gathered; irradianceNormal: the cell
+    /// normal, w = 0 none, 1 one-sided, 2 two-sided. Only cells some traced pixel looks up are gathered:
+    /// irradianceRequested (r32ui) is 1 where a cell was gathered for the current voxel light, 0 elsewhere,
+    /// where the three hold their cleared values.
     gl::Texture irradiance;
     gl::Texture irradianceBack;
     gl::Texture irradianceNormal;
@@ -68,11 +70,11 @@ struct VoxelVolume {
     /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
     VoxelRegion changedRegion;
     bool onlyDynamicChanged = false; ///< false after a static rebuild (changedRegion is then everything)
-    bool dynamicMoved = false;        ///< a dynamic object moved or changed material: its shadow moved too
-    Aabb dynamicBounds;         ///< World bounds of the dynamic meshes now, and at the rewrite before.
+    bool dynamicMoved = false; ///< a dynamic object moved or changed material: its shadow moved too
+    Aabb dynamicBounds; ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;
-    std::uint64_t radianceVersion = 0;  ///< Grows each time level 0 of radiance is rewritten.
-    std::uint64_t bouncedVersion = 0;   ///< Grows each time the bounce iteration rewrites `bounced`.
+    std::uint64_t radianceVersion = 0; ///< Grows each time level 0 of radiance is rewritten.
+    std::uint64_t bouncedVersion = 0; ///< Grows each time the bounce iteration rewrites `bounced`.
     BounceProgress bounceProgress;
     /// The radianceVersion levels 1..N of `radiance` were filtered for. With anisotropic mips cones read only
     /// level 0 and the directional chains, so the box levels are filtered only when something looks at them
@@ -83,29 +85,33 @@ struct VoxelVolume {
     /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
     OccupiedCellList staticVoxels;
     OccupiedCellList dynamicVoxels;
-    /** The lists that together name every occupied voxel: the static one, and the dynamic one if there are dynamic meshes. */
+    /** The lists that together name every occupied voxel: the static one, and the dynamic one if there are
+     * dynamic meshes. */
     std::vector<const OccupiedCellList*> occupiedVoxels(bool dynamicMeshes) const
     {
         if (dynamicMeshes)
-            return {&staticVoxels, &dynamicVoxels};
-        return {&staticVoxels};
+            return { &staticVoxels, &dynamicVoxels };
+        return { &staticVoxels };
     }
 
     std::size_t byteSize() const;
-    /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance. */
+    /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance.
+     */
     const gl::Texture& coneRadiance() const { return bounced ? bounced : radiance; }
     const gl::Texture& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
 };
 
-/** Shadow maps of all lights: point lights as cube layers, directional lights as 2D layers, both plain rasterised
- *  depth. Nothing writes gl_FragDepth, so llvmpipe keeps its early depth test and skips hidden fragments. */
+/** Shadow maps of all lights: point lights as cube layers, directional lights as 2D layers, both plain
+ * rasterised depth. Nothing writes gl_FragDepth, so llvmpipe keeps its early depth test and skips hidden
+ * fragments. */
 struct ShadowMaps {
-    gl::Texture pointDepth;       ///< depth32f cube map array: each face's perspective depth over [pointNear, pointFar].
+    gl::Texture
+        pointDepth; ///< depth32f cube map array: each face's perspective depth over [pointNear, pointFar].
     gl::Texture directionalDepth; ///< depth32f 2D array.
     gl::Framebuffer framebuffer;
     int size = 0;
     float pointNear = 1e-4f; ///< metres: the cube faces' near plane (depth 0)
-    float pointFar = 1.0f;   ///< metres: the cube faces' far plane (depth 1)
+    float pointFar = 1.0f; ///< metres: the cube faces' far plane (depth 1)
     std::vector<glm::mat4> directionalMatrices; ///< world to light clip space, one per directional light
     std::uint64_t version = 0; ///< Grows each time the maps are redrawn.
 };
@@ -117,32 +123,32 @@ struct ScreenTargets {
     /// rgba32ui: the g-buffer's one target: normal, albedo, front face, material index and view depth, packed
     /// (shaders/common/GBufferSurface.glsl); material 0 = no surface.
     gl::Texture surface;
-    /// depth32f + stencil8: the stencil holds each pixel's class (common/PixelClass.glsl), from the g-buffer's
-    /// materials, so the composite runs each shader variant on its own pixels only.
+    /// depth32f + stencil8: the stencil holds each pixel's class (common/PixelClass.glsl), from the
+    /// g-buffer's materials, so the composite runs each shader variant on its own pixels only.
     gl::Texture depth;
     gl::Framebuffer gbuffer;
-    gl::Texture indirectDiffuse;  ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
-    /// rgba32f: what the composite's upsampling weighs each traced pixel by: the tangent plane of the pixel it
-    /// was traced from (unit normal, offset dot(p - camera, n)), 0 where no surface.
+    gl::Texture indirectDiffuse; ///< rgba16f: cosine-weighted incoming radiance, a = ambient visibility.
+    /// rgba32f: what the composite's upsampling weighs each traced pixel by: the tangent plane of the pixel
+    /// it was traced from (unit normal, offset dot(p - camera, n)), 0 where no surface.
     gl::Texture indirectGuide;
     gl::Texture indirectStencil; ///< depth24 + stencil8 at the traced size: the traced pixels' classes
     gl::Framebuffer indirectTarget;
     /// The specular cone's own grid, width/specularDivisor x height/specularDivisor (rounded up).
     int specularDivisor = 1;
-    gl::Texture specular;        ///< rgba16f: radiance along the specular cone.
-    gl::Texture specularGuide;   ///< rgba32f: the specular grid's tangent planes, as indirectGuide
+    gl::Texture specular; ///< rgba16f: radiance along the specular cone.
+    gl::Texture specularGuide; ///< rgba32f: the specular grid's tangent planes, as indirectGuide
     gl::Texture specularStencil; ///< depth24 + stencil8: the specular grid's pixel classes
     gl::Framebuffer specularTarget;
-    /// The area lights' shadow grid (passes/AreaLightPass), width/areaDivisor x height/areaDivisor (rounded up):
-    /// the share of each traced pixel's area-light irradiance its shadow cones let through (rgba16f, a), its
-    /// guide (rgba32f, as indirectGuide), stencil and framebuffer.
+    /// The area lights' shadow grid (passes/AreaLightPass), width/areaDivisor x height/areaDivisor (rounded
+    /// up): the share of each traced pixel's area-light irradiance its shadow cones let through (rgba16f, a),
+    /// its guide (rgba32f, as indirectGuide), stencil and framebuffer.
     int areaDivisor = 1;
     gl::Texture areaShadow;
     gl::Texture areaShadowGuide;
     gl::Texture areaShadowStencil;
     gl::Framebuffer areaShadowTarget;
-    gl::Texture final;            ///< rgba32f: linear radiance of the frame.
-    gl::Framebuffer finalTarget;  ///< with the g-buffer's depth and stencil, read only</
+    gl::Texture final; ///< rgba32f: linear radiance of the frame.
+    gl::Framebuffer finalTarget; ///< with the g-buffer's depth and stencil, read only</
 };
 
 } // namespace vct::render

@@ -13,7 +13,8 @@ struct FrameRules {
     static bool hasLightSources(const FrameContext& frame)
     {
         const Scene& scene = frame.scene.scene();
-        const bool lights = frame.settings.direct && (!scene.pointLights.empty() || !scene.directionalLights.empty());
+        const bool lights
+            = frame.settings.direct && (!scene.pointLights.empty() || !scene.directionalLights.empty());
         return lights || emissionNeeded(frame);
     }
     static bool emissionNeeded(const FrameContext& frame)
@@ -34,7 +35,10 @@ struct FrameRules {
         return areaLightsUsed(frame) ? int(frame.scene.areaLights().lights.size()) : 0;
     }
     /** Emission goes into the voxels for the cones to gather: when it is not lit as area lights. */
-    static bool voxelEmissionNeeded(const FrameContext& frame) { return emissionNeeded(frame) && !areaLightsUsed(frame); }
+    static bool voxelEmissionNeeded(const FrameContext& frame)
+    {
+        return emissionNeeded(frame) && !areaLightsUsed(frame);
+    }
     /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
     static bool ambientOcclusionNeeded(const FrameContext& frame)
     {
@@ -46,7 +50,8 @@ struct FrameRules {
     }
     static bool specularConesNeeded(const FrameContext& frame)
     {
-        return frame.settings.indirectSpecular && frame.scene.scene().hasGlossyMaterial() && hasLightSources(frame);
+        return frame.settings.indirectSpecular && frame.scene.scene().hasGlossyMaterial()
+            && hasLightSources(frame);
     }
 };
 

@@ -25,8 +25,8 @@ bool Frustum::mayContain(const Aabb& box) const
     const glm::vec3 pad = (hi - lo) * 1e-4f + glm::max(glm::abs(lo), glm::abs(hi)) * 1e-6f;
     for (const glm::vec4& plane : m_planes) {
         // The box corner furthest along the plane normal.
-        const glm::vec3 far(plane.x >= 0.0f ? hi.x + pad.x : lo.x - pad.x, plane.y >= 0.0f ? hi.y + pad.y : lo.y - pad.y,
-            plane.z >= 0.0f ? hi.z + pad.z : lo.z - pad.z);
+        const glm::vec3 far(plane.x >= 0.0f ? hi.x + pad.x : lo.x - pad.x,
+            plane.y >= 0.0f ? hi.y + pad.y : lo.y - pad.y, plane.z >= 0.0f ? hi.z + pad.z : lo.z - pad.z);
         if (glm::dot(glm::vec3(plane), far) + plane.w < 0.0f)
             return false;
     }

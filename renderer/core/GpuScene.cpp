@@ -17,8 +17,10 @@ Aabb worldBounds(const MeshCluster& cluster, const glm::mat4& transform)
 {
     Aabb world;
     for (int corner = 0; corner < 8; ++corner)
-        world.extend(glm::vec3(transform * glm::vec4((corner & 1) ? cluster.bounds.max.x : cluster.bounds.min.x,
-            (corner & 2) ? cluster.bounds.max.y : cluster.bounds.min.y, (corner & 4) ? cluster.bounds.max.z : cluster.bounds.min.z, 1.0f)));
+        world.extend(glm::vec3(transform
+            * glm::vec4((corner & 1) ? cluster.bounds.max.x : cluster.bounds.min.x,
+                (corner & 2) ? cluster.bounds.max.y : cluster.bounds.min.y,
+                (corner & 4) ? cluster.bounds.max.z : cluster.bounds.min.z, 1.0f)));
     return world;
 }
 
@@ -31,11 +33,12 @@ std::vector<glm::vec3> fallbackNormals(const Mesh& mesh)
         const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
         if (a >= normals.size() || b >= normals.size() || c >= normals.size())
             continue;
-        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        const glm::vec3 n
+            = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
         const float length = glm::length(n);
         if (!std::isfinite(length) || !(length > 0.0f))
             continue;
-        for (const std::uint32_t v : {a, b, c})
+        for (const std::uint32_t v : { a, b, c })
             if (!found[v]) {
                 normals[v] = n / length;
                 found[v] = true;
@@ -72,7 +75,8 @@ GpuScene::GpuScene(const Scene& scene)
         GpuMesh gpu;
         const MeshClusters clustered(mesh.positions, mesh.indices);
         gpu.vertices = gl::Buffer(vertices.size() * sizeof(Vertex), vertices.data(), 0);
-        gpu.indices = gl::Buffer(clustered.indices().size() * sizeof(std::uint32_t), clustered.indices().data(), 0);
+        gpu.indices
+            = gl::Buffer(clustered.indices().size() * sizeof(std::uint32_t), clustered.indices().data(), 0);
         gpu.clusters = clustered.clusters();
         gpu.surface = std::make_unique<ClosedSurface>(mesh.positions, clustered.indices(), gpu.clusters);
         gpu.vao = gl::VertexArray::create();
@@ -87,17 +91,21 @@ GpuScene::GpuScene(const Scene& scene)
         int levels = 1;
         for (int s = std::max(image.width, image.height); s > 1; s /= 2)
             ++levels;
-        gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, std::max(1, image.width), std::max(1, image.height), levels);
-        if (image.width > 0 && image.height > 0 && image.rgba.size() >= std::size_t(image.width) * image.height * 4) {
-            // TextureImage rows run top to bottom and the importer flips V (aiProcess_FlipUVs): row 0 is t = 0.
-            glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        gl::Texture texture = gl::Texture::create2D(
+            GL_SRGB8_ALPHA8, std::max(1, image.width), std::max(1, image.height), levels);
+        if (image.width > 0 && image.height > 0
+            && image.rgba.size() >= std::size_t(image.width) * image.height * 4) {
+            // TextureImage rows run top to bottom and the importer flips V (aiProcess_FlipUVs): row 0 is t =
+            // 0.
+            glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                image.rgba.data());
             glGenerateTextureMipmap(texture.id());
         }
         texture.setWrap(GL_REPEAT);
         m_textures.push_back(std::move(texture));
     }
     m_whiteTexture = gl::Texture::create2D(GL_SRGB8_ALPHA8, 1, 1);
-    const unsigned char white[4] = {255, 255, 255, 255};
+    const unsigned char white[4] = { 255, 255, 255, 255 };
     glTextureSubImage2D(m_whiteTexture.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
     uploadMaterialTable();
     rebuildAreaLights();
@@ -122,7 +130,8 @@ void GpuScene::rebuildAreaLights()
     if (entries.empty())
         entries.emplace_back(0.0f); // a buffer texture needs storage
     m_areaLightTable = gl::Buffer(entries.size() * sizeof(glm::vec4), entries.data());
-    m_areaLightTableView = gl::Texture::createBufferView(GL_RGBA32F, m_areaLightTable.id(), int(entries.size()));
+    m_areaLightTableView
+        = gl::Texture::createBufferView(GL_RGBA32F, m_areaLightTable.id(), int(entries.size()));
 }
 
 void GpuScene::bindAreaLightTable(GLuint unit) const
@@ -132,7 +141,8 @@ void GpuScene::bindAreaLightTable(GLuint unit) const
 
 void GpuScene::uploadMaterialTable()
 {
-    // Two rgba32f texels per material (shaders/common/MaterialTable.glsl): specular rgb + shininess, emission.
+    // Two rgba32f texels per material (shaders/common/MaterialTable.glsl): specular rgb + shininess,
+    // emission.
     std::vector<glm::vec4> entries;
     const Material fallback;
     for (std::size_t i = 0; i <= m_scene.materials.size(); ++i) {
@@ -143,7 +153,8 @@ void GpuScene::uploadMaterialTable()
     const std::size_t bytes = entries.size() * sizeof(glm::vec4);
     if (!m_materialTable || m_materialTableBytes != bytes) {
         m_materialTable = gl::Buffer(bytes, entries.data());
-        m_materialTableView = gl::Texture::createBufferView(GL_RGBA32F, m_materialTable.id(), int(entries.size()));
+        m_materialTableView
+            = gl::Texture::createBufferView(GL_RGBA32F, m_materialTable.id(), int(entries.size()));
         m_materialTableBytes = bytes;
     } else {
         m_materialTable.upload(entries.data(), bytes);
@@ -159,7 +170,9 @@ const Material& GpuScene::materialOf(std::size_t index) const
 {
     static const Material fallback;
     const int material = m_scene.meshes[index].material;
-    return material >= 0 && std::size_t(material) < m_scene.materials.size() ? m_scene.materials[std::size_t(material)] : fallback;
+    return material >= 0 && std::size_t(material) < m_scene.materials.size()
+        ? m_scene.materials[std::size_t(material)]
+        : fallback;
 }
 
 void GpuScene::bindMesh(const gl::Program& program, std::size_t index, GLuint albedoUnit) const
@@ -174,7 +187,8 @@ void GpuScene::bindMesh(const gl::Program& program, std::size_t index, GLuint al
     program.set("uEmission", material.emission);
     program.set("uSpecular", material.specular);
     program.set("uShininess", material.shininess);
-    const bool textured = material.albedoTexture >= 0 && std::size_t(material.albedoTexture) < m_textures.size();
+    const bool textured
+        = material.albedoTexture >= 0 && std::size_t(material.albedoTexture) < m_textures.size();
     (textured ? m_textures[std::size_t(material.albedoTexture)] : m_whiteTexture).bindUnit(albedoUnit);
     m_meshes[index].vao.bind();
 }
@@ -206,7 +220,8 @@ bool GpuScene::cullsBackFaces(std::size_t index, const Viewpoint& from) const
 bool GpuScene::showsFrontOnly(std::size_t index) const
 {
     // A mirroring transform turns GL's notion of front faces around: draw both sides then, as before.
-    return !materialOf(index).doubleSided && glm::determinant(glm::mat3(m_scene.meshes[index].transform)) > 0.0f;
+    return !materialOf(index).doubleSided
+        && glm::determinant(glm::mat3(m_scene.meshes[index].transform)) > 0.0f;
 }
 
 void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const
@@ -221,14 +236,15 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
     const bool perCluster = options.visibleIn || options.from;
     for (std::size_t i = 0; i < m_meshes.size(); ++i) {
         const Mesh& mesh = m_scene.meshes[i];
-        if ((options.layer == MeshFilter::Static && mesh.dynamic) || (options.layer == MeshFilter::Dynamic && !mesh.dynamic))
+        if ((options.layer == MeshFilter::Static && mesh.dynamic)
+            || (options.layer == MeshFilter::Dynamic && !mesh.dynamic))
             continue;
         if (m_meshes[i].indexCount == 0)
             continue;
         if (options.materials && !options.materials(materialOf(i)))
             continue;
         if (!perCluster) {
-            runs.push_back({i, 0, std::uint32_t(m_meshes[i].indexCount), 0.0f});
+            runs.push_back({ i, 0, std::uint32_t(m_meshes[i].indexCount), 0.0f });
             continue;
         }
         for (const MeshCluster& cluster : m_meshes[i].clusters) {
@@ -247,11 +263,12 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
                 && runs.back().firstIndex + runs.back().indexCount == cluster.firstIndex)
                 runs.back().indexCount += cluster.indexCount;
             else
-                runs.push_back({i, cluster.firstIndex, cluster.indexCount, distance});
+                runs.push_back({ i, cluster.firstIndex, cluster.indexCount, distance });
         }
     }
     if (options.from)
-        std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.distance < b.distance; });
+        std::stable_sort(
+            runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.distance < b.distance; });
     std::size_t bound = m_meshes.size();
     for (const Run& run : runs) {
         if (run.mesh != bound) {
@@ -294,7 +311,8 @@ void GpuScene::setMaterial(std::size_t index, const Material& material)
     }
 }
 
-void GpuScene::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
+void GpuScene::setLights(
+    const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
 {
     m_scene.pointLights = points;
     m_scene.directionalLights = directionals;

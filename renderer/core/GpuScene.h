@@ -18,7 +18,8 @@ namespace vct::render {
 
 /** Texture unit of the material table in the passes that read the g-buffer (MATERIAL_TABLE_UNIT). */
 constexpr GLuint kMaterialTableUnit = 3;
-/** Texture units of the area-light table and the opacity volume its visibility cones trace (common/AreaLights.glsl). */
+/** Texture units of the area-light table and the opacity volume its visibility cones trace
+ * (common/AreaLights.glsl). */
 constexpr GLuint kAreaLightTableUnit = 11;
 constexpr GLuint kOpacityUnit = 15;
 
@@ -30,7 +31,7 @@ using MaterialFilter = std::function<bool(const Material&)>;
 
 /** The eye of a perspective view, and how far from it the corners of its near clip plane lie (metres). */
 struct Viewpoint {
-    glm::vec3 position{0.0f};
+    glm::vec3 position { 0.0f };
     float nearRadius = 0.0f;
 };
 
@@ -56,8 +57,8 @@ public:
 
     /**
      * Draws every mesh the options select with `program` bound, setting the per-mesh uniforms the shaders in
-     * shaders/common/Material.glsl read (uModel, uNormalMatrix, material fields) and binding the albedo texture
-     * at unit `albedoUnit`.
+     * shaders/common/Material.glsl read (uModel, uNormalMatrix, material fields) and binding the albedo
+     * texture at unit `albedoUnit`.
      */
     void draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const;
     /**
@@ -89,12 +90,13 @@ private:
         std::vector<MeshCluster> clusters;
         std::unique_ptr<ClosedSurface> surface;
         // The last answer of cullsBackFaces(), for the six faces of a cube map and for repeated frames.
-        mutable glm::vec3 cullViewpoint{0.0f};
-        mutable glm::mat4 cullTransform{0.0f};
+        mutable glm::vec3 cullViewpoint { 0.0f };
+        mutable glm::mat4 cullTransform { 0.0f };
         mutable bool cullBack = false;
     };
     void bindMesh(const gl::Program& program, std::size_t mesh, GLuint albedoUnit) const;
-    /** Whether back faces of the mesh can be left out of a view from @p from without changing what it sees. */
+    /** Whether back faces of the mesh can be left out of a view from @p from without changing what it sees.
+     */
     bool cullsBackFaces(std::size_t mesh, const Viewpoint& from) const;
     /** Whether the mesh's material shows front faces only (Material::doubleSided off). */
     bool showsFrontOnly(std::size_t mesh) const;

@@ -21,12 +21,14 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     }
     for (int i = 0; i < directionals; ++i) {
         const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
-        const bool shadowed = light.castsShadows && shadows.directionalDepth && std::size_t(i) < shadows.directionalMatrices.size();
+        const bool shadowed = light.castsShadows && shadows.directionalDepth
+            && std::size_t(i) < shadows.directionalMatrices.size();
         directions.emplace_back(light.direction, shadowed ? 1.0f : 0.0f);
         irradiances.emplace_back(light.irradiance, 0.0f);
         if (shadowed)
-            glProgramUniformMatrix4fv(program.id(), program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()),
-                1, GL_FALSE, &shadows.directionalMatrices[std::size_t(i)][0][0]);
+            glProgramUniformMatrix4fv(program.id(),
+                program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()), 1, GL_FALSE,
+                &shadows.directionalMatrices[std::size_t(i)][0][0]);
     }
     program.set("uPointLightPosition", positions);
     program.set("uPointLightIntensity", intensities);

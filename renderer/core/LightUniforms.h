@@ -6,7 +6,8 @@
 
 namespace vct::render {
 
-/** Lights beyond these counts are ignored (and reported by the renderer); shaders/common/Lights.glsl agrees. */
+/** Lights beyond these counts are ignored (and reported by the renderer); shaders/common/Lights.glsl agrees.
+ */
 constexpr int kMaxPointLights = 8;
 constexpr int kMaxDirectionalLights = 4;
 

@@ -34,7 +34,8 @@ struct Splitter {
         }
         // Small enough, or every centroid in one point (no split can help): cut into runs of maxTriangles.
         for (auto runStart = first; runStart != last;) {
-            const auto runEnd = runStart + std::ptrdiff_t(std::min<std::size_t>(maxTriangles, std::size_t(last - runStart)));
+            const auto runEnd = runStart
+                + std::ptrdiff_t(std::min<std::size_t>(maxTriangles, std::size_t(last - runStart)));
             MeshCluster cluster;
             cluster.firstIndex = std::uint32_t(out.size());
             for (auto it = runStart; it != runEnd; ++it)
@@ -71,7 +72,8 @@ MeshClusters::MeshClusters(const std::vector<glm::vec3>& positions, const std::v
     std::vector<std::uint32_t> order(triangles);
     std::iota(order.begin(), order.end(), 0u);
     m_indices.reserve(triangles * 3);
-    Splitter splitter{positions, indices, centroids, std::max<std::size_t>(maxTriangles, 1), m_indices, m_clusters};
+    Splitter splitter { positions, indices, centroids, std::max<std::size_t>(maxTriangles, 1), m_indices,
+        m_clusters };
     splitter.split(order.begin(), order.end());
 }
 

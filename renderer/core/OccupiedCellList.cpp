@@ -7,14 +7,15 @@
 
 namespace vct::render {
 
-void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region,
-    int cellSize, const gl::Texture* clearTarget, glm::vec4 clearValue)
+void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& albedo,
+    const VoxelRegion& region, int cellSize, const gl::Texture* clearTarget, glm::vec4 clearValue)
 {
     if (!m_program)
-        m_program = shaders.build({"occupied cells", {"common/ListOccupied.comp"}, {}});
+        m_program = shaders.build({ "occupied cells", { "common/ListOccupied.comp" }, {} });
     if (clearTarget && !region.isEmpty()) {
         const glm::ivec3 lo = region.lo, size = region.size();
-        glClearTexSubImage(clearTarget->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, &clearValue[0]);
+        glClearTexSubImage(clearTarget->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT,
+            &clearValue[0]);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     albedo.bindUnit(0);
@@ -29,7 +30,7 @@ void OccupiedCellList::reset(std::size_t capacity, unsigned binding)
     const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(std::uint32_t);
     if (m_cells.size() < bytes)
         m_cells = gl::Buffer(bytes, nullptr, 0);
-    const std::uint32_t empty[4] = {0, 1, 1, 0};
+    const std::uint32_t empty[4] = { 0, 1, 1, 0 };
     m_dispatch.upload(empty, sizeof empty);
     m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
     m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, binding + 1);
@@ -47,7 +48,7 @@ void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& r
     lister.set("uGroupSize", kGroupSize);
     // The lister's own work-group size: on llvmpipe each group costs a fixed overhead, and 8^3 groups
     // instead of 4^3 took the listing of the atrium's 128^3 grid from ~80 ms to ~30 ms.
-    GLint local[3] = {1, 1, 1};
+    GLint local[3] = { 1, 1, 1 };
     glGetProgramiv(lister.id(), GL_COMPUTE_WORK_GROUP_SIZE, local);
     const glm::ivec3 groupSize(local[0], local[1], local[2]);
     const glm::ivec3 groups = (size + groupSize - 1) / groupSize;

@@ -23,30 +23,33 @@ public:
 
     /**
      * Lists the cells of @p cellSize^3 voxels in @p region (in cells) whose voxels have opacity in @p albedo.
-     * With @p clearTarget, first clears the region of its level 0 to @p clearValue (one texel per cell): the heavy
-     * pass then writes the listed cells only. A clear costs far less on llvmpipe than a shader's stores.
+     * With @p clearTarget, first clears the region of its level 0 to @p clearValue (one texel per cell): the
+     * heavy pass then writes the listed cells only. A clear costs far less on llvmpipe than a shader's
+     * stores.
      */
-    void build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region, int cellSize,
-        const gl::Texture* clearTarget = nullptr, glm::vec4 clearValue = glm::vec4(0.0f));
+    void build(const ShaderLibrary& shaders, const gl::Texture& albedo, const VoxelRegion& region,
+        int cellSize, const gl::Texture* clearTarget = nullptr, glm::vec4 clearValue = glm::vec4(0.0f));
     /**
-     * Lists with a pass of the caller's: @p lister (local size 4^3, including common/AppendCell.glsl, its other
-     * uniforms and bindings already set) runs over @p region and calls appendCell() for the cells to list.
+     * Lists with a pass of the caller's: @p lister (local size 4^3, including common/AppendCell.glsl, its
+     * other uniforms and bindings already set) runs over @p region and calls appendCell() for the cells to
+     * list.
      */
     void buildWith(const gl::Program& lister, const VoxelRegion& region);
     /**
-     * Empties the list and binds it (storage buffers @p binding and the next) for a shader of the caller's, of
-     * any stage, to fill with appendCell() (common/AppendCell.glsl with APPEND_BINDING = @p binding, its
+     * Empties the list and binds it (storage buffers @p binding and the next) for a shader of the caller's,
+     * of any stage, to fill with appendCell() (common/AppendCell.glsl with APPEND_BINDING = @p binding, its
      * uGroupSize set to kGroupSize) with at most @p capacity cells: the voxelizer lists the voxels it reaches
      * this way while it writes them.
      */
     void reset(std::size_t capacity, unsigned binding = 0);
-    /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells. */
+    /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells.
+     */
     void dispatchOverCells() const;
 
 private:
     gl::Program m_program;
     gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the count
-    gl::Buffer m_cells;    ///< packed cell coordinates, 10 bits per axis
+    gl::Buffer m_cells; ///< packed cell coordinates, 10 bits per axis
 };
 
 } // namespace vct::render

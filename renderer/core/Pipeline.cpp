@@ -8,14 +8,22 @@ namespace vct::render {
 const char* resourceName(Resource resource)
 {
     switch (resource) {
-    case Resource::ShadowMaps: return "shadow maps";
-    case Resource::VoxelMaterials: return "voxel materials";
-    case Resource::VoxelRadiance: return "voxel radiance";
-    case Resource::VoxelMips: return "voxel mips";
-    case Resource::VoxelIrradiance: return "voxel irradiance";
-    case Resource::GBuffer: return "G-buffer";
-    case Resource::IndirectLight: return "indirect light";
-    case Resource::FinalImage: return "final image";
+    case Resource::ShadowMaps:
+        return "shadow maps";
+    case Resource::VoxelMaterials:
+        return "voxel materials";
+    case Resource::VoxelRadiance:
+        return "voxel radiance";
+    case Resource::VoxelMips:
+        return "voxel mips";
+    case Resource::VoxelIrradiance:
+        return "voxel irradiance";
+    case Resource::GBuffer:
+        return "G-buffer";
+    case Resource::IndirectLight:
+        return "indirect light";
+    case Resource::FinalImage:
+        return "final image";
     }
     return "?";
 }
@@ -51,7 +59,7 @@ FrameStats Pipeline::execute(FrameContext& frame)
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
         const PassDecision decision = pass.plan(frame);
-        PassStats entry{pass.name(), "run", decision.reason, 0.0};
+        PassStats entry { pass.name(), "run", decision.reason, 0.0 };
         if (decision.action == PassDecision::Action::Run) {
             timers[i].begin();
             pass.execute(frame);

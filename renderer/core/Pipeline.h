@@ -14,7 +14,7 @@ class Pipeline {
 public:
     /** When a frame's timer results are read. */
     enum class TimingReadback {
-        ThisFrame,     ///< execute() waits for them: exact per-frame figures (command lines, benchmarks, tests)
+        ThisFrame, ///< execute() waits for them: exact per-frame figures (command lines, benchmarks, tests)
         PreviousFrame, ///< execute() reports the frame before, whose results are in: no stall (the editor)
     };
 

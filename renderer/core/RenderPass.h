@@ -8,7 +8,16 @@ namespace vct::render {
 struct FrameContext;
 
 /** Named resources passes hand to each other; the pipeline checks each read follows its write. */
-enum class Resource { ShadowMaps, VoxelMaterials, VoxelRadiance, VoxelMips, VoxelIrradiance, GBuffer, IndirectLight, FinalImage };
+enum class Resource {
+    ShadowMaps,
+    VoxelMaterials,
+    VoxelRadiance,
+    VoxelMips,
+    VoxelIrradiance,
+    GBuffer,
+    IndirectLight,
+    FinalImage
+};
 
 const char* resourceName(Resource resource);
 

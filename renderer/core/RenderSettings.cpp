@@ -11,9 +11,9 @@ namespace vct::render {
 
 namespace {
 
-constexpr DebugView kViews[] = {DebugView::Final, DebugView::Direct, DebugView::IndirectDiffuse,
-    DebugView::IndirectSpecular, DebugView::AmbientOcclusion, DebugView::Albedo, DebugView::Normal,
-    DebugView::Emission};
+constexpr DebugView kViews[]
+    = { DebugView::Final, DebugView::Direct, DebugView::IndirectDiffuse, DebugView::IndirectSpecular,
+          DebugView::AmbientOcclusion, DebugView::Albedo, DebugView::Normal, DebugView::Emission };
 
 bool parseFloat(const std::string& text, float& out)
 {
@@ -60,8 +60,7 @@ struct Field {
     const char* meaning;
 };
 
-template <typename T>
-Field makeField(T RenderSettings::*member, const char* meaning)
+template <typename T> Field makeField(T RenderSettings::*member, const char* meaning)
 {
     Field f;
     f.meaning = meaning;
@@ -82,12 +81,16 @@ const std::map<std::string, Field>& fields()
 {
     static const std::map<std::string, Field> table = [] {
         std::map<std::string, Field> t;
-        t["voxel_res"] = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
-        t["conservative"] = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
-        t["anisotropic"] = makeField(&RenderSettings::anisotropicMips, "direction-dependent mips: six chains composited along each axis (on/off)");
+        t["voxel_res"]
+            = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
+        t["conservative"]
+            = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
+        t["anisotropic"] = makeField(&RenderSettings::anisotropicMips,
+            "direction-dependent mips: six chains composited along each axis (on/off)");
         Field bounces;
-        bounces.meaning = "light bounces carried by the voxels: converged (every bounce, until the change is under "
-                          "bounce_tolerance), or 1..64";
+        bounces.meaning
+            = "light bounces carried by the voxels: converged (every bounce, until the change is under "
+              "bounce_tolerance), or 1..64";
         bounces.parse = [](RenderSettings& s, const std::string& v) {
             if (v == "converged") {
                 s.bounces = RenderSettings::kConvergedBounces;
@@ -100,31 +103,49 @@ const std::map<std::string, Field>& fields()
             return true;
         };
         bounces.print = [](const RenderSettings& s) {
-            return s.bounces == RenderSettings::kConvergedBounces ? std::string("converged") : std::to_string(s.bounces);
+            return s.bounces == RenderSettings::kConvergedBounces ? std::string("converged")
+                                                                  : std::to_string(s.bounces);
         };
         t["bounces"] = bounces;
-        t["bounce_cell"] = makeField(&RenderSettings::bounceCellSize, "cell side in voxels of the bounce iteration's gather: 2 or 4");
-        t["bounce_tolerance"] = makeField(&RenderSettings::bounceTolerance, "bounces=converged stops below this relative change (0.0001..0.5)");
-        t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache, "diffuse cones gathered once per surface voxel, looked up per pixel (on/off)");
-        t["irradiance_cell"] = makeField(&RenderSettings::irradianceCellSize, "irradiance cache cell side in voxels: 1, 2 or 4");
+        t["bounce_cell"] = makeField(
+            &RenderSettings::bounceCellSize, "cell side in voxels of the bounce iteration's gather: 2 or 4");
+        t["bounce_tolerance"] = makeField(&RenderSettings::bounceTolerance,
+            "bounces=converged stops below this relative change (0.0001..0.5)");
+        t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache,
+            "diffuse cones gathered once per surface voxel, looked up per pixel (on/off)");
+        t["irradiance_cell"] = makeField(
+            &RenderSettings::irradianceCellSize, "irradiance cache cell side in voxels: 1, 2 or 4");
         t["diffuse_cones"] = makeField(&RenderSettings::diffuseConeCount, "number of diffuse cones (1..32)");
-        t["diffuse_aperture"] = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
-        t["specular_aperture"] = makeField(&RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
-        t["step"] = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
-        t["max_distance"] = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
-        t["indirect_res"] = makeField(&RenderSettings::indirectDivisor, "trace indirect light at 1/N resolution per axis: 1, 2 or 4");
-        t["area_shadow_res"] = makeField(&RenderSettings::areaShadowDivisor, "trace the area lights' shadow cones at 1/N resolution per axis: 1, 2 or 4");
-        t["specular_res"] = makeField(&RenderSettings::specularDivisor, "trace the specular cone at 1/N resolution per axis: 1, 2, 4 or 8");
-        t["cone_offset"] = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
+        t["diffuse_aperture"]
+            = makeField(&RenderSettings::diffuseApertureDeg, "diffuse cone full angle, degrees (0..180)");
+        t["specular_aperture"] = makeField(
+            &RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
+        t["step"]
+            = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
+        t["max_distance"]
+            = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
+        t["indirect_res"] = makeField(
+            &RenderSettings::indirectDivisor, "trace indirect light at 1/N resolution per axis: 1, 2 or 4");
+        t["area_shadow_res"] = makeField(&RenderSettings::areaShadowDivisor,
+            "trace the area lights' shadow cones at 1/N resolution per axis: 1, 2 or 4");
+        t["specular_res"] = makeField(&RenderSettings::specularDivisor,
+            "trace the specular cone at 1/N resolution per axis: 1, 2, 4 or 8");
+        t["cone_offset"]
+            = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
         t["direct"] = makeField(&RenderSettings::direct, "direct light (on/off)");
-        t["indirect_diffuse"] = makeField(&RenderSettings::indirectDiffuse, "indirect diffuse cones (on/off)");
-        t["indirect_specular"] = makeField(&RenderSettings::indirectSpecular, "specular cone for glossy materials (on/off)");
-        t["ao"] = makeField(&RenderSettings::ambientOcclusion, "ambient occlusion from the diffuse cones (on/off)");
+        t["indirect_diffuse"]
+            = makeField(&RenderSettings::indirectDiffuse, "indirect diffuse cones (on/off)");
+        t["indirect_specular"]
+            = makeField(&RenderSettings::indirectSpecular, "specular cone for glossy materials (on/off)");
+        t["ao"] = makeField(
+            &RenderSettings::ambientOcclusion, "ambient occlusion from the diffuse cones (on/off)");
         t["emission"] = makeField(&RenderSettings::emission, "emissive materials (on/off)");
-        t["view_culling"] = makeField(&RenderSettings::viewCulling, "draw only what each view can see, nearest first (on/off; the image is the same)");
+        t["view_culling"] = makeField(&RenderSettings::viewCulling,
+            "draw only what each view can see, nearest first (on/off; the image is the same)");
         t["shadow_map"] = makeField(&RenderSettings::shadowMapSize, "shadow map texels per side (64..8192)");
         t["exposure"] = makeField(&RenderSettings::exposure, "exposure multiplier for 8-bit output (>0)");
-        t["voxel_budget_mb"] = makeField(&RenderSettings::voxelBudgetMiB, "most MiB the voxel textures may take (64..1048576)");
+        t["voxel_budget_mb"] = makeField(
+            &RenderSettings::voxelBudgetMiB, "most MiB the voxel textures may take (64..1048576)");
         Field view;
         view.meaning = "final|direct|indirect_diffuse|indirect_specular|ao|albedo|normal|emission";
         view.parse = [](RenderSettings& s, const std::string& v) {
@@ -147,14 +168,22 @@ const std::map<std::string, Field>& fields()
 const char* debugViewName(DebugView view)
 {
     switch (view) {
-    case DebugView::Final: return "final";
-    case DebugView::Direct: return "direct";
-    case DebugView::IndirectDiffuse: return "indirect_diffuse";
-    case DebugView::IndirectSpecular: return "indirect_specular";
-    case DebugView::AmbientOcclusion: return "ao";
-    case DebugView::Albedo: return "albedo";
-    case DebugView::Normal: return "normal";
-    case DebugView::Emission: return "emission";
+    case DebugView::Final:
+        return "final";
+    case DebugView::Direct:
+        return "direct";
+    case DebugView::IndirectDiffuse:
+        return "indirect_diffuse";
+    case DebugView::IndirectSpecular:
+        return "indirect_specular";
+    case DebugView::AmbientOcclusion:
+        return "ao";
+    case DebugView::Albedo:
+        return "albedo";
+    case DebugView::Normal:
+        return "normal";
+    case DebugView::Emission:
+        return "emission";
     }
     return "final";
 }
@@ -185,7 +214,8 @@ std::string RenderSettings::validate() const
     if (irradianceCellSize != 1 && irradianceCellSize != 2 && irradianceCellSize != 4)
         return "irradiance_cell must be 1, 2 or 4, not " + std::to_string(irradianceCellSize);
     if (bounces != kConvergedBounces && (bounces < 1 || bounces > kMaxBounces))
-        return "bounces must be converged or 1.." + std::to_string(kMaxBounces) + ", not " + std::to_string(bounces);
+        return "bounces must be converged or 1.." + std::to_string(kMaxBounces) + ", not "
+            + std::to_string(bounces);
     if (bounceCellSize != 2 && bounceCellSize != 4)
         return "bounce_cell must be 2 or 4, not " + std::to_string(bounceCellSize);
     if (!(bounceTolerance >= 1e-4f && bounceTolerance <= 0.5f))
@@ -217,7 +247,8 @@ std::string RenderSettings::validate() const
         std::snprintf(text, sizeof text,
             "voxel_res=%d%s needs %.1f GiB of voxel textures, more than voxel_budget_mb=%d allows; "
             "lower voxel_res or raise voxel_budget_mb if the GL has the memory",
-            voxelResolution, anisotropicMips ? " with anisotropic mips" : "", double(bytes) / double(1u << 30), voxelBudgetMiB);
+            voxelResolution, anisotropicMips ? " with anisotropic mips" : "",
+            double(bytes) / double(1u << 30), voxelBudgetMiB);
         return text;
     }
     return {};
@@ -236,18 +267,22 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         return total;
     };
     const std::uint64_t n = std::uint64_t(voxelResolution);
-    std::uint64_t bytes = 12 * n * n * n * 4;                      // r32f accumulation atlas, 4n x 3n x n
-    bytes += 2 * (chain(n, 4, false) + 2 * chain(n, 8, false));  // albedo rgba8, normal + emission rgba16f; static and combined
-    bytes += chain(n, 8, true);                                  // radiance rgba16f, full chain
-    bytes += chain(n, 4, true);                                  // opacity per axis, rgba8, full chain (area-light shadows)
+    std::uint64_t bytes = 12 * n * n * n * 4; // r32f accumulation atlas, 4n x 3n x n
+    bytes += 2
+        * (chain(n, 4, false)
+            + 2 * chain(n, 8, false)); // albedo rgba8, normal + emission rgba16f; static and combined
+    bytes += chain(n, 8, true); // radiance rgba16f, full chain
+    bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
     if (anisotropicMips && n >= 2)
-        bytes += 11 * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
+        bytes += 11
+            * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
     if (bounces != 1) { // the bounced volume and its chains; the bounce cells (front, back, normal, rgba16f)
         bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 11 * chain(n / 2, 8, true) : 0);
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(bounceCellSize), 1);
         bytes += 3 * chain(cells, 8, false);
     }
-    if (irradianceCache) { // irradiance front and back, cell normals, rgba16f; which cells were gathered, r32ui
+    if (irradianceCache) { // irradiance front and back, cell normals, rgba16f; which cells were gathered,
+                           // r32ui
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1);
         bytes += 3 * chain(cells, 8, false) + chain(cells, 4, false);
     }
@@ -258,13 +293,14 @@ std::vector<std::vector<std::string>> RenderSettings::describe() const
 {
     std::vector<std::vector<std::string>> rows;
     for (const auto& [name, field] : fields())
-        rows.push_back({name, field.print(*this), field.meaning});
+        rows.push_back({ name, field.print(*this), field.meaning });
     return rows;
 }
 
 bool RenderSettings::voxelsDifferFrom(const RenderSettings& other) const
 {
-    return voxelResolution != other.voxelResolution || conservativeVoxelization != other.conservativeVoxelization;
+    return voxelResolution != other.voxelResolution
+        || conservativeVoxelization != other.conservativeVoxelization;
 }
 
 } // namespace vct::render

@@ -7,14 +7,23 @@
 namespace vct::render {
 
 /** What to show instead of the final image, for inspecting one term. */
-enum class DebugView { Final, Direct, IndirectDiffuse, IndirectSpecular, AmbientOcclusion, Albedo, Normal, Emission };
+enum class DebugView {
+    Final,
+    Direct,
+    IndirectDiffuse,
+    IndirectSpecular,
+    AmbientOcclusion,
+    Albedo,
+    Normal,
+    Emission
+};
 
 /**
  * Every accuracy and feature setting of a frame. Angles in degrees, distances in metres unless noted.
  * set() parses the `key=value` form used by `vct-render --set` and the project files.
  */
 struct RenderSettings {
-    int voxelResolution = 128;          ///< Grid cells per side, power of two, 8..512.
+    int voxelResolution = 128; ///< Grid cells per side, power of two, 8..512.
     bool conservativeVoxelization = true;
     /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
     /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample. On by
@@ -23,8 +32,9 @@ struct RenderSettings {
     bool anisotropicMips = true;
     /// Light bounces the voxels carry. 1 = direct light and emission only (the cones add the one bounce seen
     /// per pixel). N >= 2: the voxels iterate N - 1 times L = L_direct + albedo * (light gathered from L)
-    /// (VoxelBouncePass), so pixels see N bounces. kConvergedBounces (`bounces=converged`, the default) iterates
-    /// until the estimated remaining change is under bounceTolerance: every bounce, as a closed room needs.
+    /// (VoxelBouncePass), so pixels see N bounces. kConvergedBounces (`bounces=converged`, the default)
+    /// iterates until the estimated remaining change is under bounceTolerance: every bounce, as a closed room
+    /// needs.
     int bounces = kConvergedBounces;
     static constexpr int kConvergedBounces = 0;
     static constexpr int kMaxBounces = 64; ///< also the most iterations `converged` runs
@@ -34,50 +44,55 @@ struct RenderSettings {
     /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to
     /// come estimated from how fast it shrinks, are both under this.
     float bounceTolerance = 0.01f;
-    /// Gather the diffuse cones once per surface voxel whenever the voxels' light changes (VoxelIrradiancePass),
-    /// and give each pixel a normal-aware trilinear lookup of that instead of its own cones: a camera move then
-    /// traces no diffuse cones at all. Pixels with no matching surface voxel nearby still trace their own.
-    /// On by default: at 1280x720 on the atrium it makes full frames 10% and camera-only frames 3.5x faster
-    /// and the error against the references slightly lower (docs/BENCHMARKS.md); it leaks more light through
-    /// walls thinner than a voxel (docs/STABILITY.md), and small images' full frames cost more.
+    /// Gather the diffuse cones once per surface voxel whenever the voxels' light changes
+    /// (VoxelIrradiancePass), and give each pixel a normal-aware trilinear lookup of that instead of its own
+    /// cones: a camera move then traces no diffuse cones at all. Pixels with no matching surface voxel nearby
+    /// still trace their own. On by default: at 1280x720 on the atrium it makes full frames 10% and
+    /// camera-only frames 3.5x faster and the error against the references slightly lower
+    /// (docs/BENCHMARKS.md); it leaks more light through walls thinner than a voxel (docs/STABILITY.md), and
+    /// small images' full frames cost more.
     bool irradianceCache = true;
     /// Voxels per side of one irradiance-cache cell (1, 2 or 4): one gather per cell that holds a surface.
     int irradianceCellSize = 2;
-    int diffuseConeCount = 5;           ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
-    /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30 degrees is
-    /// on the accuracy frontier of both studied scenes, and nine cones were no better (docs/ACCURACY.md).
+    int diffuseConeCount = 5; ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
+    /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30
+    /// degrees is on the accuracy frontier of both studied scenes, and nine cones were no better
+    /// (docs/ACCURACY.md).
     float diffuseApertureDeg = 30.0f;
-    float specularApertureDeg = 15.0f;  ///< Narrowest specular cone; glossier lobes are clamped to it.
-    float stepFactor = 1.0f;            ///< beta: step = cone diameter * beta.
-    float maxDistance = -1.0f;          ///< Cone length in metres; negative = the grid's diagonal.
-    float coneOffsetVoxels = 1.5f;      ///< Cone origins start this many voxels along the normal.
+    float specularApertureDeg = 15.0f; ///< Narrowest specular cone; glossier lobes are clamped to it.
+    float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
+    float maxDistance = -1.0f; ///< Cone length in metres; negative = the grid's diagonal.
+    float coneOffsetVoxels = 1.5f; ///< Cone origins start this many voxels along the normal.
     /// Indirect light is traced for one pixel in divisor x divisor (1, 2 or 4) and upsampled with depth- and
     /// normal-aware weights: indirect light varies slowly, and the cones are most of a frame's cost.
-    /// Quarter resolution (4) costs no measurable accuracy against half or full (within 1.5%, docs/ACCURACY.md).
+    /// Quarter resolution (4) costs no measurable accuracy against half or full (within 1.5%,
+    /// docs/ACCURACY.md).
     int indirectDivisor = 4;
-    /// The specular cone is traced for one pixel in divisor x divisor (1, 2, 4 or 8) and upsampled the same way.
-    /// Specular cones are never narrower than specularApertureDeg, so what they see varies slowly over the
-    /// screen except across edges, which the upsampling keeps; 8 halves the cone pass of the atrium's glossy
-    /// floor for no measurable error (docs/ACCURACY.md).
+    /// The specular cone is traced for one pixel in divisor x divisor (1, 2, 4 or 8) and upsampled the same
+    /// way. Specular cones are never narrower than specularApertureDeg, so what they see varies slowly over
+    /// the screen except across edges, which the upsampling keeps; 8 halves the cone pass of the atrium's
+    /// glossy floor for no measurable error (docs/ACCURACY.md).
     int specularDivisor = 8;
-    /// The area lights' shadow cones are traced for one pixel in divisor x divisor (1, 2 or 4) and the share of
-    /// light they let through is upsampled; the unshadowed irradiance stays exact per pixel. 2 keeps a blocker's
-    /// penumbra within 10% of the path tracer's at a quarter of the cones (tests/gl/tst_AreaLights).
+    /// The area lights' shadow cones are traced for one pixel in divisor x divisor (1, 2 or 4) and the share
+    /// of light they let through is upsampled; the unshadowed irradiance stays exact per pixel. 2 keeps a
+    /// blocker's penumbra within 10% of the path tracer's at a quarter of the cones
+    /// (tests/gl/tst_AreaLights).
     int areaShadowDivisor = 2;
     bool direct = true;
     bool indirectDiffuse = true;
     bool indirectSpecular = true;
-    bool ambientOcclusion = true;       ///< Computed from the diffuse cones; shown by view=ao.
+    bool ambientOcclusion = true; ///< Computed from the diffuse cones; shown by view=ao.
     bool emission = true;
-    int shadowMapSize = 1024;           ///< Texels per cube face / directional map side.
+    int shadowMapSize = 1024; ///< Texels per cube face / directional map side.
     /// The g-buffer and shadow maps draw only the triangle clusters a view can see, nearest first, and leave
     /// out the back faces of closed meshes seen from outside (core/GpuScene, core/ClosedSurface). The image
     /// is the same either way; off is for comparison.
     bool viewCulling = true;
-    float exposure = 1.0f;              ///< Multiplier applied before the filmic curve, 8-bit output only.
+    float exposure = 1.0f; ///< Multiplier applied before the filmic curve, 8-bit output only.
     DebugView view = DebugView::Final;
     /// Voxel textures may take at most this many MiB; validate() refuses a grid that needs more, instead of
-    /// letting the GL fail (or llvmpipe page for minutes). 512^3 needs 12.1 GiB: raise this where the GPU has it.
+    /// letting the GL fail (or llvmpipe page for minutes). 512^3 needs 12.1 GiB: raise this where the GPU has
+    /// it.
     int voxelBudgetMiB = 4096;
 
     /** Applies one `key=value`; returns an empty string or a message saying what is wrong. */

@@ -14,9 +14,9 @@
 #include "passes/GBufferPass.h"
 #include "passes/InjectLightPass.h"
 #include "passes/MipmapPass.h"
+#include "passes/ShadowMapPass.h"
 #include "passes/VoxelBouncePass.h"
 #include "passes/VoxelIrradiancePass.h"
-#include "passes/ShadowMapPass.h"
 #include "passes/VoxelMipBuilder.h"
 #include "passes/VoxelizePass.h"
 
@@ -81,8 +81,8 @@ std::unique_ptr<Pipeline> makePipeline()
 }
 
 // One grid of traced pixels: its targets for one value and the guide, and its stencil, in one framebuffer.
-void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl::Texture& guide, gl::Texture& stencil,
-    gl::Framebuffer& target)
+void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl::Texture& guide,
+    gl::Texture& stencil, gl::Framebuffer& target)
 {
     const int w = (width + divisor - 1) / divisor, h = (height + divisor - 1) / divisor;
     values = gl::Texture::create2D(GL_RGBA16F, w, h);
@@ -98,8 +98,8 @@ void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl:
 
 void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int specularDivisor, int areaDivisor)
 {
-    if (s.width == width && s.height == height && s.indirectDivisor == divisor && s.specularDivisor == specularDivisor
-        && s.areaDivisor == areaDivisor && s.final)
+    if (s.width == width && s.height == height && s.indirectDivisor == divisor
+        && s.specularDivisor == specularDivisor && s.areaDivisor == areaDivisor && s.final)
         return;
     s.areaDivisor = areaDivisor;
     s.width = width;
@@ -113,9 +113,12 @@ void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int spec
     s.gbuffer.attachColor(0, s.surface);
     s.gbuffer.attachDepth(s.depth);
     s.gbuffer.finish(1);
-    makeTracedGrid(width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
-    makeTracedGrid(width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
-    makeTracedGrid(width, height, areaDivisor, s.areaShadow, s.areaShadowGuide, s.areaShadowStencil, s.areaShadowTarget);
+    makeTracedGrid(
+        width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
+    makeTracedGrid(
+        width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
+    makeTracedGrid(
+        width, height, areaDivisor, s.areaShadow, s.areaShadowGuide, s.areaShadowStencil, s.areaShadowTarget);
     s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
     s.finalTarget = gl::Framebuffer::create();
     s.finalTarget.attachColor(0, s.final);
@@ -129,7 +132,8 @@ std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& 
         throw std::invalid_argument("voxel level " + std::to_string(level) + " out of range");
     size = std::max(1, texture.width() >> level);
     std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
-    glGetTextureImage(texture.id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+    glGetTextureImage(
+        texture.id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
     return data;
 }
 
@@ -144,8 +148,8 @@ CameraMatrices cameraMatrices(const Camera& camera, float aspect, const Aabb& bo
     const float sceneRadius = std::max(0.5f * glm::length(bounds.size()), 1e-20f);
     const float farPlane = glm::length(camera.position - bounds.center()) + 2.0f * sceneRadius;
     const float nearPlane = std::max(camera.nearPlane, farPlane * 1e-5f);
-    return {glm::lookAt(camera.position, camera.lookAt, camera.up),
-        glm::perspective(glm::radians(camera.fovYDeg), aspect, nearPlane, farPlane)};
+    return { glm::lookAt(camera.position, camera.lookAt, camera.up),
+        glm::perspective(glm::radians(camera.fovYDeg), aspect, nearPlane, farPlane) };
 }
 
 glm::mat3 pixelToRay(const Camera& camera, int width, int height)
@@ -179,10 +183,13 @@ Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<Shade
     GLint extensions = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
     for (GLint i = 0; i < extensions; ++i)
-        if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))), "GL_NV_shader_atomic_float") == 0)
+        if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))),
+                "GL_NV_shader_atomic_float")
+            == 0)
             atomicFloat = true;
     if (!atomicFloat)
-        throw std::runtime_error("the GL driver lacks GL_NV_shader_atomic_float, needed to average voxel fragments");
+        throw std::runtime_error(
+            "the GL driver lacks GL_NV_shader_atomic_float, needed to average voxel fragments");
     gl::DebugOutput::enable();
     m_state->shaders = std::move(shaders);
     m_state->pipeline = makePipeline();
@@ -191,7 +198,7 @@ Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<Shade
     m_state->shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, 1, 1, 1);
     m_state->shadows.pointDepth.setDepthComparison();
     m_state->shadows.directionalDepth.setDepthComparison();
-    m_state->scene = std::make_unique<GpuScene>(Scene{});
+    m_state->scene = std::make_unique<GpuScene>(Scene {});
 }
 
 Renderer::~Renderer() = default;
@@ -220,7 +227,8 @@ void Renderer::setSettings(const RenderSettings& settings)
     }
     if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
         ++m_state->versions.shading;
-    if (settings.shadowMapSize != m_settings.shadowMapSize || settings.viewCulling != m_settings.viewCulling) {
+    if (settings.shadowMapSize != m_settings.shadowMapSize
+        || settings.viewCulling != m_settings.viewCulling) {
         ++m_state->versions.lightPlacement;
         ++m_state->versions.lightValues; // every shadow lookup changes: re-inject everything
     }
@@ -244,7 +252,8 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
     const std::vector<Material>& materials = m_state->scene->scene().materials;
     // Voxels hold albedo and emission only: a specular or gloss edit changes per-pixel shading alone.
     const bool voxelsAffected = index >= materials.size() || materials[index].albedo != material.albedo
-        || materials[index].emission != material.emission || materials[index].albedoTexture != material.albedoTexture;
+        || materials[index].emission != material.emission
+        || materials[index].albedoTexture != material.albedoTexture;
     // Single-sided surfaces leave their back faces out of the shadow maps too: redraw them, and the light.
     if (index < materials.size() && materials[index].doubleSided != material.doubleSided) {
         ++m_state->versions.lightPlacement;
@@ -269,11 +278,13 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
         ++m_state->versions.dynamicMaterials;
 }
 
-void Renderer::setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
+void Renderer::setLights(
+    const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
 {
     const Scene& old = m_state->scene->scene();
     // A change of colour or intensity alone keeps the shadow maps.
-    bool placementChanged = points.size() != old.pointLights.size() || directionals.size() != old.directionalLights.size();
+    bool placementChanged
+        = points.size() != old.pointLights.size() || directionals.size() != old.directionalLights.size();
     for (std::size_t i = 0; !placementChanged && i < points.size(); ++i)
         placementChanged = points[i].position != old.pointLights[i].position
             || points[i].castsShadows != old.pointLights[i].castsShadows;
@@ -306,10 +317,12 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         st.voxels.frame = wanted;
         ++st.versions.staticGeometry;
     }
-    resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor, m_settings.areaShadowDivisor);
+    resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor,
+        m_settings.areaShadowDivisor);
 
-    FrameContext frame{*st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen, st.cones,
-        st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), glm::mat3(1.0f), st.coneSampleCounter.get()};
+    FrameContext frame { *st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen,
+        st.cones, st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), glm::mat3(1.0f),
+        st.coneSampleCounter.get() };
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     frame.view = matrices.view;
     frame.projection = matrices.projection;
@@ -320,7 +333,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         st.coneSampleCounter->reset();
     FrameStats stats = st.pipeline->execute(frame);
     st.coneSamples = st.coneSampleCounter ? st.coneSampleCounter->read() : 0;
-    st.staticMaterialEdits = Aabb{};
+    st.staticMaterialEdits = Aabb {};
     stats.voxelBytes = st.voxels.byteSize();
     stats.width = width;
     stats.height = height;
@@ -338,7 +351,8 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
     if (!st.screen.final || width <= 0 || height <= 0)
         return;
     if (!st.presentProgram) {
-        st.presentProgram = st.shaders->build({"present", {"common/FullScreen.vert", "present/Present.frag"}, {}});
+        st.presentProgram
+            = st.shaders->build({ "present", { "common/FullScreen.vert", "present/Present.frag" }, {} });
         st.emptyVao = gl::VertexArray::create();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -359,8 +373,8 @@ const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
     return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
 }
 
-std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer,
-    int x, int y, int width, int height, float exposure)
+std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel,
+    unsigned framebuffer, int x, int y, int width, int height, float exposure)
 {
     State& st = *m_state;
     if (width <= 0 || height <= 0)
@@ -378,7 +392,8 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
-    const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), st.scene->scene().bounds());
+    const CameraMatrices matrices
+        = cameraMatrices(camera, float(width) / float(height), st.scene->scene().bounds());
     const std::size_t drawn = st.inspector.draw(*st.shaders, matrices.projection * matrices.view, exposure);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
@@ -387,7 +402,8 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
 
 void Renderer::setTimesFromPreviousFrame(bool previousFrame)
 {
-    m_state->pipeline->setTimingReadback(previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
+    m_state->pipeline->setTimingReadback(
+        previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
 }
 
 void Renderer::setBounceIterationsPerFrame(int iterations)
@@ -417,7 +433,8 @@ RadianceImage Renderer::readFrame() const
     // GL rows run bottom to top.
     for (int y = 0; y < s.height; ++y)
         for (int x = 0; x < s.width; ++x) {
-            const float* p = &rgba[(std::size_t(s.height - 1 - y) * std::size_t(s.width) + std::size_t(x)) * 4];
+            const float* p
+                = &rgba[(std::size_t(s.height - 1 - y) * std::size_t(s.width) + std::size_t(x)) * 4];
             image.at(x, y) = glm::vec3(p[0], p[1], p[2]);
         }
     return image;
@@ -427,16 +444,18 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
 {
     ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     const VoxelVolume& v = m_state->voxels;
-    static const char* const kDirectional[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
+    static const char* const kDirectional[6]
+        = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
     for (std::size_t d = 0; d < 6; ++d)
         if (channel == kDirectional[d]) {
             if (!v.directional || level < 1 || level - 1 >= v.directional.levels())
-                throw std::invalid_argument("no " + channel + " level " + std::to_string(level) + " (needs anisotropic mips, levels from 1)");
+                throw std::invalid_argument("no " + channel + " level " + std::to_string(level)
+                    + " (needs anisotropic mips, levels from 1)");
             // Tile d is the slab from z = 2d tiles (gl::Texture::create3DStack).
             size = std::max(1, v.directional.width() >> (level - 1));
             std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
-            glGetTextureSubImage(v.directional.id(), level - 1, 0, 0, GLint(2 * d) * size, size, size, size, GL_RGBA,
-                GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+            glGetTextureSubImage(v.directional.id(), level - 1, 0, 0, GLint(2 * d) * size, size, size, size,
+                GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
             return data;
         }
     const gl::Texture* texture = channel == "albedo" ? &v.albedo
@@ -445,7 +464,8 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
         : channel == "radiance"                      ? &v.radiance
                                                      : nullptr;
     if (!texture || !*texture)
-        throw std::invalid_argument("no voxel channel '" + channel + "' (albedo, normal, emission, radiance)");
+        throw std::invalid_argument(
+            "no voxel channel '" + channel + "' (albedo, normal, emission, radiance)");
     return readTextureLevel(*texture, level, size);
 }
 
@@ -454,11 +474,26 @@ const Scene& Renderer::scene() const
     return m_state->scene->scene();
 }
 
-float Renderer::voxelSize() const { return m_state->voxels.frame.voxelSize(); }
-int Renderer::voxelResolution() const { return m_state->voxels.frame.resolution; }
-glm::vec3 Renderer::gridOrigin() const { return m_state->voxels.frame.origin; }
-std::size_t Renderer::voxelBytes() const { return m_state->voxels.byteSize(); }
-std::vector<VoxelTextureMemory> Renderer::voxelMemory() const { return describeVoxelMemory(m_state->voxels); }
+float Renderer::voxelSize() const
+{
+    return m_state->voxels.frame.voxelSize();
+}
+int Renderer::voxelResolution() const
+{
+    return m_state->voxels.frame.resolution;
+}
+glm::vec3 Renderer::gridOrigin() const
+{
+    return m_state->voxels.frame.origin;
+}
+std::size_t Renderer::voxelBytes() const
+{
+    return m_state->voxels.byteSize();
+}
+std::vector<VoxelTextureMemory> Renderer::voxelMemory() const
+{
+    return describeVoxelMemory(m_state->voxels);
+}
 
 void Renderer::setConeSampleCounting(bool enabled)
 {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/NonFiniteCount.h"
 #include "core/FrameStats.h"
+#include "core/NonFiniteCount.h"
 #include "core/RenderSettings.h"
 #include "core/VoxelChannel.h"
 #include "core/VoxelTextureMemory.h"
@@ -25,7 +25,8 @@ class ShaderLibrary;
  */
 class Renderer {
 public:
-    /** Loads GL through getProcAddress (glad); throws std::runtime_error when 4.5 core or a needed extension is missing. */
+    /** Loads GL through getProcAddress (glad); throws std::runtime_error when 4.5 core or a needed extension
+     * is missing. */
     explicit Renderer(gl::ProcAddressFunction getProcAddress);
     /** For tests and hot reload: shaders from a custom library. */
     Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<ShaderLibrary> shaders);
@@ -48,7 +49,8 @@ public:
     void setMaterial(std::size_t index, const Material& material);
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
 
-    /** Forgets every cached pass output: the next frame runs every pass (benchmarks, forced-full comparisons). */
+    /** Forgets every cached pass output: the next frame runs every pass (benchmarks, forced-full
+     * comparisons). */
     void invalidate();
     /** Renders one frame into the internal HDR target. */
     FrameStats renderFrame(const Camera& camera, int width, int height);
@@ -63,8 +65,8 @@ public:
      * Draws listVoxels(level, channel) as instanced cubes, seen by camera, into a rectangle of a framebuffer
      * (cleared first); returns the number of cubes drawn.
      */
-    std::size_t drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer, int x,
-        int y, int width, int height, float exposure);
+    std::size_t drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer,
+        int x, int y, int width, int height, float exposure);
     /** NaN/Inf texel counts of every float render target and voxel level (a readback per resource). */
     std::vector<NonFiniteCount> countNonFinite();
     /**
@@ -73,9 +75,9 @@ public:
      */
     void setTimesFromPreviousFrame(bool previousFrame);
     /**
-     * With bounces=converged: at most @p iterations bounce iterations per frame, each new solve starting from the
-     * last (an interactive host renders frames until FrameStats::lightConverged); 0 (the default) runs them all
-     * in the frame, from the first-bounce light, so a frame depends on its inputs alone.
+     * With bounces=converged: at most @p iterations bounce iterations per frame, each new solve starting from
+     * the last (an interactive host renders frames until FrameStats::lightConverged); 0 (the default) runs
+     * them all in the frame, from the first-bounce light, so a frame depends on its inputs alone.
      */
     void setBounceIterationsPerFrame(int iterations);
     /** Mip levels of the radiance volume (0 before the first frame). */
@@ -97,11 +99,12 @@ public:
     /** Every 3D texture of the voxel grid with its bytes per mip level (empty before the first frame). */
     std::vector<VoxelTextureMemory> voxelMemory() const;
     /**
-     * Benchmarks only: while on, the cone pass runs a variant that counts its 3D texture fetches. It is slower
-     * than the normal pass, so do not time frames drawn with it.
+     * Benchmarks only: while on, the cone pass runs a variant that counts its 3D texture fetches. It is
+     * slower than the normal pass, so do not time frames drawn with it.
      */
     void setConeSampleCounting(bool enabled);
-    /** Fetches the cone pass made in the last frame while counting was on; 0 otherwise or if it did not run. */
+    /** Fetches the cone pass made in the last frame while counting was on; 0 otherwise or if it did not run.
+     */
     std::uint64_t coneSampleCount() const;
     /** GL errors and KHR_debug messages since the last call. */
     std::vector<std::string> takeGlErrors();

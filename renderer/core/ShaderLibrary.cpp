@@ -31,19 +31,30 @@ std::optional<std::string> defaultLookup(const std::string& path)
 
 GLenum stageOf(const std::string& path)
 {
-    const auto ends = [&](const char* ext) { return path.size() > 5 && path.compare(path.size() - 5, 5, ext) == 0; };
-    if (ends(".vert")) return GL_VERTEX_SHADER;
-    if (ends(".geom")) return GL_GEOMETRY_SHADER;
-    if (ends(".frag")) return GL_FRAGMENT_SHADER;
-    if (ends(".comp")) return GL_COMPUTE_SHADER;
+    const auto ends
+        = [&](const char* ext) { return path.size() > 5 && path.compare(path.size() - 5, 5, ext) == 0; };
+    if (ends(".vert"))
+        return GL_VERTEX_SHADER;
+    if (ends(".geom"))
+        return GL_GEOMETRY_SHADER;
+    if (ends(".frag"))
+        return GL_FRAGMENT_SHADER;
+    if (ends(".comp"))
+        return GL_COMPUTE_SHADER;
     throw std::runtime_error("shader file '" + path + "' has no stage extension (.vert .geom .frag .comp)");
 }
 
 } // namespace
 
-ShaderLibrary::ShaderLibrary() : m_lookup(defaultLookup) {}
+ShaderLibrary::ShaderLibrary()
+    : m_lookup(defaultLookup)
+{
+}
 
-ShaderLibrary::ShaderLibrary(Lookup lookup) : m_lookup(std::move(lookup)) {}
+ShaderLibrary::ShaderLibrary(Lookup lookup)
+    : m_lookup(std::move(lookup))
+{
+}
 
 std::string ShaderLibrary::expand(const std::string& path, int depth, std::vector<std::string>& files) const
 {
@@ -91,7 +102,7 @@ gl::Program ShaderLibrary::build(const ProgramDesc& desc) const
 {
     std::vector<gl::ShaderStageSource> stages;
     for (const std::string& file : desc.stageFiles)
-        stages.push_back({stageOf(file), desc.name + " (" + file + ")", preprocess(file, desc.defines)});
+        stages.push_back({ stageOf(file), desc.name + " (" + file + ")", preprocess(file, desc.defines) });
     return gl::Program(stages);
 }
 

@@ -13,7 +13,7 @@ namespace vct::render {
 struct ProgramDesc {
     std::string name;
     std::vector<std::string> stageFiles; ///< Paths relative to shaders/, e.g. "voxelize/Voxelize.geom".
-    std::vector<std::string> defines;    ///< "NAME" or "NAME VALUE".
+    std::vector<std::string> defines; ///< "NAME" or "NAME VALUE".
 };
 
 /**

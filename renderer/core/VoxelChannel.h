@@ -12,16 +12,16 @@ enum class VoxelChannel { Albedo = 0, Radiance = 1, Opacity = 2, Normal = 3, Emi
 
 /** One non-empty voxel of an inspected level. */
 struct VoxelSample {
-    glm::ivec3 coord;  ///< Cell at the inspected level.
-    glm::vec4 value;   ///< Channel value (radiance un-premultiplied, W/(m^2 sr)); a = opacity.
+    glm::ivec3 coord; ///< Cell at the inspected level.
+    glm::vec4 value; ///< Channel value (radiance un-premultiplied, W/(m^2 sr)); a = opacity.
 };
 
 /** The non-empty voxels of one level and channel, with where its cells sit in the world. */
 struct VoxelListing {
     int level = 0;
     VoxelChannel channel = VoxelChannel::Radiance;
-    glm::vec3 origin{0.0f}; ///< Grid min corner, metres.
-    float cellSize = 1.0f;  ///< Side of a cell at this level, metres.
+    glm::vec3 origin { 0.0f }; ///< Grid min corner, metres.
+    float cellSize = 1.0f; ///< Side of a cell at this level, metres.
     std::vector<VoxelSample> samples;
 };
 

@@ -18,7 +18,7 @@ VoxelGridFrame VoxelGridFrame::fit(const Aabb& bounds, int resolution)
     VoxelGridFrame frame;
     frame.resolution = std::max(1, resolution);
     const glm::vec3 size = bounds.isEmpty() ? glm::vec3(1.0f) : bounds.size();
-    float largest = std::max({size.x, size.y, size.z});
+    float largest = std::max({ size.x, size.y, size.z });
     if (!(largest > 0.0f) || !std::isfinite(largest))
         largest = 1.0f;
     // extent = largest + 2 cells, with cell = extent / resolution.

@@ -13,17 +13,18 @@ struct GpuEntry {
 
 } // namespace
 
-const VoxelListing& VoxelInspector::list(const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel)
+const VoxelListing& VoxelInspector::list(
+    const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel)
 {
     if (!volume.radiance)
-        return m_listing = VoxelListing{};
+        return m_listing = VoxelListing {};
     level = std::clamp(level, 0, volume.radiance.levels() - 1);
-    const std::array<std::uint64_t, 5> key{std::uint64_t(level), std::uint64_t(channel), volume.materialsVersion,
-        volume.radianceVersion, std::uint64_t(volume.frame.resolution)};
+    const std::array<std::uint64_t, 5> key { std::uint64_t(level), std::uint64_t(channel),
+        volume.materialsVersion, volume.radianceVersion, std::uint64_t(volume.frame.resolution) };
     if (m_valid && key == m_key)
         return m_listing;
     if (!m_compact) {
-        m_compact = shaders.build({"inspector compact", {"inspector/CompactVoxels.comp"}, {}});
+        m_compact = shaders.build({ "inspector compact", { "inspector/CompactVoxels.comp" }, {} });
         m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     const int size = std::max(1, volume.frame.resolution >> level);
@@ -33,8 +34,8 @@ const VoxelListing& VoxelInspector::list(const ShaderLibrary& shaders, const Vox
     const std::uint32_t zero = 0;
     m_counter.upload(&zero, sizeof zero);
     const gl::Texture& channelTexture = channel == VoxelChannel::Normal ? volume.normal
-        : channel == VoxelChannel::Emission                          ? volume.emission
-                                                                     : volume.albedo;
+        : channel == VoxelChannel::Emission                             ? volume.emission
+                                                                        : volume.albedo;
     volume.radiance.bindUnit(0);
     channelTexture.bindUnit(1);
     volume.albedo.bindUnit(2);
@@ -55,21 +56,24 @@ const VoxelListing& VoxelInspector::list(const ShaderLibrary& shaders, const Vox
     std::vector<GpuEntry> entries(count);
     if (count)
         glGetNamedBufferSubData(m_entries.id(), 0, GLsizeiptr(count * sizeof(GpuEntry)), entries.data());
-    m_listing = VoxelListing{level, channel, volume.frame.origin, volume.frame.voxelSize() * float(1 << level), {}};
+    m_listing = VoxelListing { level, channel, volume.frame.origin,
+        volume.frame.voxelSize() * float(1 << level), {} };
     m_listing.samples.reserve(count);
     for (const GpuEntry& e : entries)
-        m_listing.samples.push_back({glm::ivec3(e.coord), e.value});
+        m_listing.samples.push_back({ glm::ivec3(e.coord), e.value });
     m_key = key;
     m_valid = true;
     return m_listing;
 }
 
-std::size_t VoxelInspector::draw(const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure)
+std::size_t VoxelInspector::draw(
+    const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure)
 {
     if (!m_valid || m_listing.samples.empty())
         return 0;
     if (!m_cubes) {
-        m_cubes = shaders.build({"inspector cubes", {"inspector/VoxelCube.vert", "inspector/VoxelCube.frag"}, {}});
+        m_cubes = shaders.build(
+            { "inspector cubes", { "inspector/VoxelCube.vert", "inspector/VoxelCube.frag" }, {} });
         m_emptyVao = gl::VertexArray::create();
     }
     m_cubes.use();

@@ -19,7 +19,8 @@ namespace vct::render {
  */
 class VoxelInspector {
 public:
-    const VoxelListing& list(const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel);
+    const VoxelListing& list(
+        const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel);
     /** Draws the current list with the given view; returns how many cubes were drawn. */
     std::size_t draw(const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure);
 
@@ -30,7 +31,8 @@ private:
     gl::Buffer m_counter;
     gl::VertexArray m_emptyVao;
     VoxelListing m_listing;
-    std::array<std::uint64_t, 5> m_key{}; ///< level, channel, materials version, radiance version, resolution
+    std::array<std::uint64_t, 5>
+        m_key {}; ///< level, channel, materials version, radiance version, resolution
     bool m_valid = false;
 };
 

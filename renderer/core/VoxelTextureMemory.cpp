@@ -66,8 +66,8 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
         { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
         { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
         { "bounce cells", &v.bounceIrradiance }, { "bounce cells, back faces", &v.bounceIrradianceBack },
-        { "bounce cell normals", &v.bounceCellNormal },
-        { "irradiance cache", &v.irradiance }, { "irradiance cache, back faces", &v.irradianceBack },
+        { "bounce cell normals", &v.bounceCellNormal }, { "irradiance cache", &v.irradiance },
+        { "irradiance cache, back faces", &v.irradianceBack },
         { "irradiance cell normals", &v.irradianceNormal },
         { "irradiance cells gathered", &v.irradianceRequested } };
     for (const auto& [name, texture] : named)

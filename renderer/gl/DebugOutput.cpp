@@ -12,7 +12,8 @@ namespace {
 std::mutex g_mutex;
 std::vector<std::string> g_errors;
 
-void GLAPIENTRY onMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message, const void*)
+void GLAPIENTRY onMessage(
+    GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message, const void*)
 {
     if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH)
         return;

@@ -42,7 +42,8 @@ void Framebuffer::attachColorLayer(int index, const Texture& texture, int layer)
 void Framebuffer::attachDepth(const Texture& texture, int level)
 {
     const bool stencil = texture.format() == GL_DEPTH32F_STENCIL8 || texture.format() == GL_DEPTH24_STENCIL8;
-    glNamedFramebufferTexture(id(), stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, texture.id(), level);
+    glNamedFramebufferTexture(
+        id(), stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, texture.id(), level);
 }
 
 void Framebuffer::attachDepthLayer(const Texture& texture, int layer)
@@ -66,7 +67,7 @@ void Framebuffer::finish(int colorCount)
 
 void Framebuffer::drawTo(std::initializer_list<int> colors)
 {
-    GLenum buffers[8] = {GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE};
+    GLenum buffers[8] = { GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE };
     int count = 0;
     for (const int c : colors) {
         buffers[c] = GLenum(GL_COLOR_ATTACHMENT0 + c);

@@ -7,15 +7,20 @@
 namespace vct::gl {
 
 /** Move-only ownership of one GL object name; Deleter is called once with the name. */
-template <void (*Deleter)(GLuint)>
-class Handle {
+template <void (*Deleter)(GLuint)> class Handle {
 public:
     Handle() = default;
-    explicit Handle(GLuint id) : m_id(id) {}
+    explicit Handle(GLuint id)
+        : m_id(id)
+    {
+    }
     ~Handle() { reset(); }
     Handle(const Handle&) = delete;
     Handle& operator=(const Handle&) = delete;
-    Handle(Handle&& other) noexcept : m_id(std::exchange(other.m_id, 0)) {}
+    Handle(Handle&& other) noexcept
+        : m_id(std::exchange(other.m_id, 0))
+    {
+    }
     Handle& operator=(Handle&& other) noexcept
     {
         if (this != &other) {

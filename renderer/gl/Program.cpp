@@ -78,13 +78,34 @@ GLint Program::location(const char* name) const
     return it->second;
 }
 
-void Program::set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
-void Program::set(const char* name, unsigned v) const { glProgramUniform1ui(id(), location(name), v); }
-void Program::set(const char* name, float v) const { glProgramUniform1f(id(), location(name), v); }
-void Program::set(const char* name, const glm::vec2& v) const { glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v)); }
-void Program::set(const char* name, const glm::vec3& v) const { glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v)); }
-void Program::set(const char* name, const glm::ivec3& v) const { glProgramUniform3iv(id(), location(name), 1, glm::value_ptr(v)); }
-void Program::set(const char* name, const glm::vec4& v) const { glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v)); }
+void Program::set(const char* name, int v) const
+{
+    glProgramUniform1i(id(), location(name), v);
+}
+void Program::set(const char* name, unsigned v) const
+{
+    glProgramUniform1ui(id(), location(name), v);
+}
+void Program::set(const char* name, float v) const
+{
+    glProgramUniform1f(id(), location(name), v);
+}
+void Program::set(const char* name, const glm::vec2& v) const
+{
+    glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec3& v) const
+{
+    glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::ivec3& v) const
+{
+    glProgramUniform3iv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec4& v) const
+{
+    glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
+}
 void Program::set(const char* name, const glm::mat3& v) const
 {
     glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));

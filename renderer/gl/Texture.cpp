@@ -38,7 +38,12 @@ std::size_t bytesPerTexel(GLenum internalFormat)
 }
 
 Texture::Texture(GLenum target, GLenum format, int w, int h, int d, int levels)
-    : m_target(target), m_format(format), m_width(w), m_height(h), m_depth(d), m_levels(levels)
+    : m_target(target)
+    , m_format(format)
+    , m_width(w)
+    , m_height(h)
+    , m_depth(d)
+    , m_levels(levels)
 {
     GLuint id = 0;
     glCreateTextures(target, 1, &id);
@@ -134,7 +139,7 @@ void Texture::setWrap(GLenum wrap)
 
 void Texture::setBorderColor(float r, float g, float b, float a)
 {
-    const float color[4] = {r, g, b, a};
+    const float color[4] = { r, g, b, a };
     glTextureParameterfv(id(), GL_TEXTURE_BORDER_COLOR, color);
 }
 
@@ -146,7 +151,8 @@ void Texture::bindUnit(GLuint unit) const
 void Texture::bindImage(GLuint unit, int level, GLenum access, GLenum format) const
 {
     const bool layered = m_target != GL_TEXTURE_2D;
-    glBindImageTexture(unit, id(), level, layered ? GL_TRUE : GL_FALSE, 0, access, format ? format : m_format);
+    glBindImageTexture(
+        unit, id(), level, layered ? GL_TRUE : GL_FALSE, 0, access, format ? format : m_format);
 }
 
 std::size_t Texture::byteSize() const

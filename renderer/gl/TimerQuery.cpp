@@ -10,7 +10,7 @@ void deleteQuery(GLuint id)
 TimerQuery TimerQuery::create()
 {
     TimerQuery q;
-    GLuint ids[2] = {0, 0};
+    GLuint ids[2] = { 0, 0 };
     glCreateQueries(GL_TIMESTAMP, 2, ids);
     q.m_start = Handle<deleteQuery>(ids[0]);
     q.m_end = Handle<deleteQuery>(ids[1]);

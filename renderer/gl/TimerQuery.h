@@ -7,9 +7,9 @@ namespace vct::gl {
 void deleteQuery(GLuint id);
 
 /**
- * GPU time of one pass from two GL_TIMESTAMP queries. Timestamps rather than GL_TIME_ELAPSED: llvmpipe reports
- * elapsed time wrongly for compute dispatches and for the first draw after a flush, but orders timestamps
- * correctly. Results are read after the frame, never inside it.
+ * GPU time of one pass from two GL_TIMESTAMP queries. Timestamps rather than GL_TIME_ELAPSED: llvmpipe
+ * reports elapsed time wrongly for compute dispatches and for the first draw after a flush, but orders
+ * timestamps correctly. Results are read after the frame, never inside it.
  */
 class TimerQuery {
 public:

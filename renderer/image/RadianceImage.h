@@ -14,10 +14,18 @@ struct RadianceImage {
     std::vector<glm::vec3> pixels; ///< width * height, row-major, top row first.
 
     RadianceImage() = default;
-    RadianceImage(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), glm::vec3(0.0f)) {}
+    RadianceImage(int w, int h)
+        : width(w)
+        , height(h)
+        , pixels(std::size_t(w) * std::size_t(h), glm::vec3(0.0f))
+    {
+    }
 
     glm::vec3& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    const glm::vec3& at(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const glm::vec3& at(int x, int y) const
+    {
+        return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
     bool isEmpty() const { return pixels.empty(); }
 };
 

@@ -17,9 +17,9 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     const int areas = FrameRules::areaLightCount(frame);
-    std::vector<std::string> defines{"POINT_LIGHT_COUNT " + std::to_string(points),
-        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals), "AREA_LIGHT_COUNT " + std::to_string(areas),
-        "VIEW " + std::to_string(int(settings.view))};
+    std::vector<std::string> defines { "POINT_LIGHT_COUNT " + std::to_string(points),
+        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
+        "AREA_LIGHT_COUNT " + std::to_string(areas), "VIEW " + std::to_string(int(settings.view)) };
     if (settings.direct && points + directionals + areas > 0)
         defines.emplace_back("DIRECT");
     // The indirect targets hold this frame's light only when the cone pass ran for them.
@@ -57,7 +57,7 @@ void CompositePass::execute(FrameContext& frame)
     s.areaShadowGuide.bindUnit(4);
     s.finalTarget.bind();
     glViewport(0, 0, s.width, s.height);
-    const float sky[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    const float sky[4] = { 0.0f, 0.0f, 0.0f, 1.0f };
     glClearNamedFramebufferfv(s.finalTarget.id(), GL_COLOR, 0, sky);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_STENCIL_TEST);
@@ -72,7 +72,8 @@ void CompositePass::execute(FrameContext& frame)
         std::vector<std::string> defines = variantDefines(frame, pixelClass);
         gl::Program& program = m_programs[defines];
         if (!program)
-            program = frame.shaders.build({"composite", {"common/FullScreen.vert", "composite/Composite.frag"}, std::move(defines)});
+            program = frame.shaders.build({ "composite",
+                { "common/FullScreen.vert", "composite/Composite.frag" }, std::move(defines) });
         program.use();
         applyLightUniforms(program, scene, frame.shadows);
         program.set("uCameraPosition", frame.camera.position);

@@ -13,22 +13,24 @@ namespace vct::render {
 
 /**
  * Sums emission, shadowed direct light and the indirect terms into the frame's linear radiance: one draw per
- * pixel class the scene's meshes have (common/PixelClass.glsl), each with the shader variant for that class and
- * a stencil test that keeps it to its own pixels.
+ * pixel class the scene's meshes have (common/PixelClass.glsl), each with the shader variant for that class
+ * and a stencil test that keeps it to its own pixels.
  */
 class CompositePass final : public RenderPass {
 public:
     const char* name() const override { return "composite"; }
     PassDeclaration declare() const override
     {
-        return {{Resource::GBuffer, Resource::IndirectLight, Resource::ShadowMaps}, {Resource::FinalImage}};
+        return { { Resource::GBuffer, Resource::IndirectLight, Resource::ShadowMaps },
+            { Resource::FinalImage } };
     }
-    PassDecision plan(const FrameContext&) override { return {PassDecision::Action::Run, "per-frame"}; }
+    PassDecision plan(const FrameContext&) override { return { PassDecision::Action::Run, "per-frame" }; }
     void execute(FrameContext& frame) override;
-    void invalidate() override {}
+    void invalidate() override { }
 
 private:
-    /** The compile-time shape of this frame's composite for pixels of @p pixelClass (shaders/composite/Composite.frag). */
+    /** The compile-time shape of this frame's composite for pixels of @p pixelClass
+     * (shaders/composite/Composite.frag). */
     static std::vector<std::string> variantDefines(const FrameContext& frame, std::uint32_t pixelClass);
 
     std::map<std::vector<std::string>, gl::Program> m_programs; // built on first use of each frame shape

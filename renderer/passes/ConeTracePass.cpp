@@ -21,23 +21,25 @@ PassDecision ConeTracePass::plan(const FrameContext& frame)
     const bool specular = FrameRules::specularConesNeeded(frame);
     if (!diffuse && !specular) {
         if (!FrameRules::hasLightSources(frame))
-            return {PassDecision::Action::Skip, "no lights and no emission: no indirect light at all"};
-        return {PassDecision::Action::Skip, "indirect diffuse off, no glossy material, AO not shown"};
+            return { PassDecision::Action::Skip, "no lights and no emission: no indirect light at all" };
+        return { PassDecision::Action::Skip, "indirect diffuse off, no glossy material, AO not shown" };
     }
     std::string reason = "per-frame: ";
     reason += diffuse ? (specular ? "diffuse and specular cones" : "diffuse cones") : "specular cones";
     if (!specular)
-        reason += frame.settings.indirectSpecular ? " (no glossy material: no specular cones)" : " (specular off)";
+        reason += frame.settings.indirectSpecular ? " (no glossy material: no specular cones)"
+                                                  : " (specular off)";
     if (diffuse && !FrameRules::ambientOcclusionNeeded(frame))
         reason += ", no AO";
     if (diffuse && VoxelIrradiancePass::inUse(frame))
         reason += ", diffuse looked up in the irradiance cache";
-    return {PassDecision::Action::Run, reason};
+    return { PassDecision::Action::Run, reason };
 }
 
 namespace {
 
-gl::Program buildVariant(const ShaderLibrary& shaders, const char* name, const char* file, bool anisotropic, bool counting)
+gl::Program buildVariant(
+    const ShaderLibrary& shaders, const char* name, const char* file, bool anisotropic, bool counting)
 {
     std::vector<std::string> defines;
     std::string label = name;
@@ -49,7 +51,7 @@ gl::Program buildVariant(const ShaderLibrary& shaders, const char* name, const c
         defines.emplace_back("COUNT_SAMPLES");
         label += ", counting samples";
     }
-    return shaders.build({label, {"common/FullScreen.vert", file}, defines});
+    return shaders.build({ label, { "common/FullScreen.vert", file }, defines });
 }
 
 } // namespace
@@ -74,8 +76,8 @@ void ConeTracePass::execute(FrameContext& frame)
     glEnable(GL_STENCIL_TEST);
     m_emptyVao.bind();
 
-    // Each grid: first the classify draw, whose own stencil value (ARB_shader_stencil_export) replaces what was
-    // there, then the cones on the pixels of their class only.
+    // Each grid: first the classify draw, whose own stencil value (ARB_shader_stencil_export) replaces what
+    // was there, then the cones on the pixels of their class only.
     const auto classifyGrid = [&](gl::Program& classify, int divisor) {
         glStencilMask(0xFF);
         glStencilFunc(GL_ALWAYS, 0, 0xFF);
@@ -103,8 +105,10 @@ void ConeTracePass::execute(FrameContext& frame)
     // The diffuse grid: the guide always (the composite upsamples it), diffuse light where needed.
     gl::Program& classify = m_classify[cached ? 1 : 0];
     if (!classify)
-        classify = frame.shaders.build({cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
-            {"common/FullScreen.vert", "cone/ClassifyPixels.frag"}, cached ? std::vector<std::string>{"IRRADIANCE_CACHE"} : std::vector<std::string>{}});
+        classify = frame.shaders.build(
+            { cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
+                { "common/FullScreen.vert", "cone/ClassifyPixels.frag" },
+                cached ? std::vector<std::string> { "IRRADIANCE_CACHE" } : std::vector<std::string> {} });
     if (cached) {
         v.irradiance.bindUnit(12);
         v.irradianceNormal.bindUnit(13);
@@ -116,39 +120,41 @@ void ConeTracePass::execute(FrameContext& frame)
     classify.set("uDiffuseEnabled", diffuse ? 1 : 0);
     s.indirectTarget.bind();
     glViewport(0, 0, s.indirectDiffuse.width(), s.indirectDiffuse.height());
-    s.indirectTarget.drawTo({0, 1});
+    s.indirectTarget.drawTo({ 0, 1 });
     classifyGrid(classify, s.indirectDivisor);
     if (diffuse) {
         gl::Program& cones = m_diffuse[anisotropic ? 1 : 0][counting ? 1 : 0];
         if (!cones)
-            cones = buildVariant(frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
-        s.indirectTarget.drawTo({0});
+            cones = buildVariant(
+                frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
+        s.indirectTarget.drawTo({ 0 });
         cones.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
         cones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
         traceClass(cones, s.indirectDivisor, PIXEL_NEEDS_CONES);
     }
-    s.indirectTarget.drawTo({0, 1});
+    s.indirectTarget.drawTo({ 0, 1 });
 
     // The specular grid, when some material is glossy: pixels no cone reaches read as no specular light.
     if (specular) {
         if (!m_classifySpecular)
-            m_classifySpecular = frame.shaders.build({"cone trace: classify pixels, specular grid",
-                {"common/FullScreen.vert", "cone/ClassifyPixels.frag"}, {"SPECULAR_GRID"}});
+            m_classifySpecular = frame.shaders.build({ "cone trace: classify pixels, specular grid",
+                { "common/FullScreen.vert", "cone/ClassifyPixels.frag" }, { "SPECULAR_GRID" } });
         gl::Program& cone = m_specular[anisotropic ? 1 : 0][counting ? 1 : 0];
         if (!cone)
-            cone = buildVariant(frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
+            cone = buildVariant(
+                frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
         s.specularTarget.bind();
         glViewport(0, 0, s.specular.width(), s.specular.height());
-        const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearNamedFramebufferfv(s.specularTarget.id(), GL_COLOR, 0, none);
-        s.specularTarget.drawTo({1});
+        s.specularTarget.drawTo({ 1 });
         classifyGrid(m_classifySpecular, s.specularDivisor);
-        s.specularTarget.drawTo({0});
+        s.specularTarget.drawTo({ 0 });
         cone.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
         cone.set("uCameraPosition", frame.camera.position);
         cone.set("uAoEnabled", 0);
         traceClass(cone, s.specularDivisor, PIXEL_GLOSSY);
-        s.specularTarget.drawTo({0, 1});
+        s.specularTarget.drawTo({ 0, 1 });
     }
     glStencilMask(0xFF);
     glDisable(GL_STENCIL_TEST);

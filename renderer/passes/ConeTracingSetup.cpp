@@ -9,15 +9,18 @@
 
 namespace vct::render {
 
-void ConeTracingSetup::apply(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
+void ConeTracingSetup::apply(
+    gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
 {
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
     const float voxel = v.frame.voxelSize();
-    const float maxDistance = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
+    const float maxDistance
+        = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
     std::vector<glm::vec4> cones;
     for (int i = 0; i < frame.diffuseCones.size(); ++i)
-        cones.emplace_back(frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
+        cones.emplace_back(
+            frame.diffuseCones.directions()[std::size_t(i)], frame.diffuseCones.weights()[std::size_t(i)]);
 
     program.set("uGridOrigin", v.frame.origin);
     program.set("uGridExtent", v.frame.extent);
@@ -37,8 +40,9 @@ void ConeTracingSetup::apply(gl::Program& program, const FrameContext& frame, bo
     }
 }
 
-void ConeTracingSetup::applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced,
-    int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals)
+void ConeTracingSetup::applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic,
+    bool useBounced, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
+    const gl::Texture& normals)
 {
     const VoxelVolume& v = frame.voxels;
     apply(program, frame, anisotropic, useBounced);

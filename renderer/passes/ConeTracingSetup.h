@@ -20,8 +20,9 @@ public:
      * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
      * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
      */
-    static void applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced,
-        int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals);
+    static void applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic,
+        bool useBounced, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
+        const gl::Texture& normals);
 };
 
 } // namespace vct::render

@@ -11,8 +11,10 @@ namespace vct::render {
 void GBufferPass::execute(FrameContext& frame)
 {
     if (!m_programs[0]) {
-        m_programs[0] = frame.shaders.build({"g-buffer", {"gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag"}, {}});
-        m_programs[1] = frame.shaders.build({"g-buffer (textured)", {"gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag"}, {"TEXTURED"}});
+        m_programs[0]
+            = frame.shaders.build({ "g-buffer", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, {} });
+        m_programs[1] = frame.shaders.build(
+            { "g-buffer (textured)", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, { "TEXTURED" } });
     }
     ScreenTargets& s = frame.screen;
     s.gbuffer.bind();
@@ -20,7 +22,7 @@ void GBufferPass::execute(FrameContext& frame)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    const GLuint none[4] = {0, 0, 0, 0};
+    const GLuint none[4] = { 0, 0, 0, 0 };
     glClearNamedFramebufferuiv(s.gbuffer.id(), GL_COLOR, 0, none);
     // Depth 1 and stencil 0: no surface, until the nearest one writes its pixel class.
     glClearNamedFramebufferfi(s.gbuffer.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
@@ -31,19 +33,21 @@ void GBufferPass::execute(FrameContext& frame)
     // testing then rejects most hidden fragments before they are shaded.
     // Relative to the eye: the world matrix loses the far plane's precision in a scene far from the origin.
     const Camera& camera = frame.camera;
-    const glm::mat4 eyeViewProjection = frame.projection * glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up);
+    const glm::mat4 eyeViewProjection
+        = frame.projection * glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up);
     const Frustum view(eyeViewProjection, camera.position);
     const glm::mat4& p = frame.projection;
-    const float nearPlane = p[3][2] / (p[2][2] - 1.0f); // glm::perspective's matrix, solved for its near plane
-    const Viewpoint eye{camera.position,
-        1.01f * nearPlane * std::sqrt(1.0f + 1.0f / (p[0][0] * p[0][0]) + 1.0f / (p[1][1] * p[1][1]))};
+    const float nearPlane
+        = p[3][2] / (p[2][2] - 1.0f); // glm::perspective's matrix, solved for its near plane
+    const Viewpoint eye { camera.position,
+        1.01f * nearPlane * std::sqrt(1.0f + 1.0f / (p[0][0] * p[0][0]) + 1.0f / (p[1][1] * p[1][1])) };
     DrawOptions options;
     if (frame.settings.viewCulling) {
         options.visibleIn = &view;
         options.from = &eye;
     }
     options.stencilPixelClass = true;
-    for (const bool textured : {false, true}) {
+    for (const bool textured : { false, true }) {
         m_programs[textured].set("uViewProjection", eyeViewProjection);
         m_programs[textured].set("uCameraPosition", camera.position);
         m_programs[textured].set("uCameraForward", glm::normalize(camera.lookAt - camera.position));

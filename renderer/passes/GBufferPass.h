@@ -9,10 +9,10 @@ namespace vct::render {
 class GBufferPass final : public RenderPass {
 public:
     const char* name() const override { return "g-buffer"; }
-    PassDeclaration declare() const override { return {{}, {Resource::GBuffer}}; }
-    PassDecision plan(const FrameContext&) override { return {PassDecision::Action::Run, "per-frame"}; }
+    PassDeclaration declare() const override { return { {}, { Resource::GBuffer } }; }
+    PassDecision plan(const FrameContext&) override { return { PassDecision::Action::Run, "per-frame" }; }
     void execute(FrameContext& frame) override;
-    void invalidate() override {}
+    void invalidate() override { }
 
 private:
     gl::Program m_programs[2]; ///< [0] untextured materials, [1] TEXTURED

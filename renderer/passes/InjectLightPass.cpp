@@ -11,8 +11,8 @@ namespace vct::render {
 
 std::array<std::uint64_t, 5> InjectLightPass::keyOf(const FrameContext& frame) const
 {
-    return {frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading, frame.shadows.version,
-        frame.scene.areaLightsVersion()};
+    return { frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading,
+        frame.shadows.version, frame.scene.areaLightsVersion() };
 }
 
 namespace {
@@ -29,9 +29,10 @@ VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const std::vector<A
         return {};
     const float reach = grid.extent * 1.75f;
     Aabb covered = box;
-    const glm::vec3 corners[8] = {box.min, {box.max.x, box.min.y, box.min.z}, {box.min.x, box.max.y, box.min.z},
-        {box.min.x, box.min.y, box.max.z}, {box.max.x, box.max.y, box.min.z}, {box.max.x, box.min.y, box.max.z},
-        {box.min.x, box.max.y, box.max.z}, box.max};
+    const glm::vec3 corners[8]
+        = { box.min, { box.max.x, box.min.y, box.min.z }, { box.min.x, box.max.y, box.min.z },
+              { box.min.x, box.min.y, box.max.z }, { box.max.x, box.max.y, box.min.z },
+              { box.max.x, box.min.y, box.max.z }, { box.min.x, box.max.y, box.max.z }, box.max };
     for (const PointLight& light : scene.pointLights) {
         if (!light.castsShadows)
             continue;
@@ -66,14 +67,16 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const auto key = keyOf(frame);
     // Lights, shading settings and shadow-map size all bump lightValues or shading: those need everything.
     // An emitter's edit changes the light everywhere its area light reaches, not only in its own voxels.
-    const bool sameLights = m_key != decltype(m_key){} && key[1] == m_key[1] && key[2] == m_key[2] && key[4] == m_key[4];
+    const bool sameLights
+        = m_key != decltype(m_key) {} && key[1] == m_key[1] && key[2] == m_key[2] && key[4] == m_key[4];
     if (!sameLights || !v.onlyDynamicChanged)
         return whole;
     if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed
         return v.changedRegion;
     const Scene& scene = frame.scene.scene();
     static const std::vector<AreaLight> none;
-    const std::vector<AreaLight>& areaLights = FrameRules::areaLightsUsed(frame) ? frame.scene.areaLights().lights : none;
+    const std::vector<AreaLight>& areaLights
+        = FrameRules::areaLightsUsed(frame) ? frame.scene.areaLights().lights : none;
     return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, areaLights, v.frame, 2))
         .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
 }
@@ -81,13 +84,14 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
 PassDecision InjectLightPass::plan(const FrameContext& frame)
 {
     if (keyOf(frame) == m_key)
-        return {PassDecision::Action::Reuse, "voxels, lights and shadows unchanged"};
-    std::string reason = m_key == decltype(m_key){} ? "no valid output yet" : "voxels or lights changed";
+        return { PassDecision::Action::Reuse, "voxels, lights and shadows unchanged" };
+    std::string reason = m_key == decltype(m_key) {} ? "no valid output yet" : "voxels or lights changed";
     const VoxelRegion region = regionToInject(frame);
     if (region.size() != VoxelRegion::whole(frame.voxels.frame.resolution).size()) {
         const glm::ivec3 s = region.size();
         reason = "re-injecting only the " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
-            + std::to_string(s.z) + " voxels that changed" + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
+            + std::to_string(s.z) + " voxels that changed"
+            + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
     if (FrameRules::areaLightsUsed(frame))
         reason += "; emitters lit as " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
@@ -97,7 +101,7 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
         reason += "; no emission to inject";
     if (!FrameRules::hasLightSources(frame))
         reason += "; no light sources: opacity only";
-    return {PassDecision::Action::Run, reason};
+    return { PassDecision::Action::Run, reason };
 }
 
 void InjectLightPass::buildOpacity(FrameContext& frame)
@@ -106,10 +110,11 @@ void InjectLightPass::buildOpacity(FrameContext& frame)
     if (v.opacityVersion == v.materialsVersion)
         return;
     if (!m_markOpacity) {
-        m_markOpacity = frame.shaders.build({"mark opacity", {"inject/MarkOpacity.comp"}, {}});
-        m_downsampleOpacity = frame.shaders.build({"downsample opacity", {"inject/DownsampleOpacity.comp"}, {}});
+        m_markOpacity = frame.shaders.build({ "mark opacity", { "inject/MarkOpacity.comp" }, {} });
+        m_downsampleOpacity
+            = frame.shaders.build({ "downsample opacity", { "inject/DownsampleOpacity.comp" }, {} });
     }
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearTexImage(v.opacity.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     m_markOpacity.use();
@@ -136,11 +141,12 @@ void InjectLightPass::execute(FrameContext& frame)
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     const int areas = FrameRules::areaLightCount(frame);
-    gl::Program& program = m_programs[{points, directionals, areas}];
+    gl::Program& program = m_programs[{ points, directionals, areas }];
     if (!program)
-        program = frame.shaders.build({"inject light", {"inject/InjectLight.comp"},
-            {"POINT_LIGHT_COUNT " + std::to_string(points), "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
-                "AREA_LIGHT_COUNT " + std::to_string(areas)}});
+        program = frame.shaders.build({ "inject light", { "inject/InjectLight.comp" },
+            { "POINT_LIGHT_COUNT " + std::to_string(points),
+                "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
+                "AREA_LIGHT_COUNT " + std::to_string(areas) } });
     if (areas > 0)
         buildOpacity(frame);
     const VoxelRegion region = regionToInject(frame);
@@ -159,7 +165,7 @@ void InjectLightPass::execute(FrameContext& frame)
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     const bool whole = region.size() == VoxelRegion::whole(v.frame.resolution).size();
     if (whole) {
-        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearTexImage(v.radiance.id(), 0, GL_RGBA, GL_FLOAT, zero);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     } else {

@@ -1,15 +1,15 @@
 #pragma once
 
+#include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "core/VoxelRegion.h"
-#include "core/OccupiedCellList.h"
 #include "gl/Program.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <tuple>
 #include <utility>
-#include <cstdint>
 
 namespace vct::render {
 
@@ -23,7 +23,7 @@ public:
     const char* name() const override { return "inject light"; }
     PassDeclaration declare() const override
     {
-        return {{Resource::VoxelMaterials, Resource::ShadowMaps}, {Resource::VoxelRadiance}};
+        return { { Resource::VoxelMaterials, Resource::ShadowMaps }, { Resource::VoxelRadiance } };
     }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
@@ -31,15 +31,17 @@ public:
 
 private:
     std::array<std::uint64_t, 5> keyOf(const FrameContext& frame) const;
-    /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object moved). */
+    /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object
+     * moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
     /** Level 0 of VoxelVolume::opacity from the occupied voxels, and its mips, when the voxels changed. */
     void buildOpacity(FrameContext& frame);
-    std::map<std::tuple<int, int, int>, gl::Program> m_programs; ///< by point, directional and area light count
+    std::map<std::tuple<int, int, int>, gl::Program>
+        m_programs; ///< by point, directional and area light count
     gl::Program m_markOpacity;
     gl::Program m_downsampleOpacity;
     OccupiedCellList m_occupied;
-    std::array<std::uint64_t, 5> m_key{};
+    std::array<std::uint64_t, 5> m_key {};
 };
 
 } // namespace vct::render

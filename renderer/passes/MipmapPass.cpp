@@ -7,14 +7,15 @@ namespace vct::render {
 PassDecision MipmapPass::plan(const FrameContext& frame)
 {
     if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic)
-        return {PassDecision::Action::Reuse, "radiance unchanged"};
-    return {PassDecision::Action::Run, "radiance was re-injected"};
+        return { PassDecision::Action::Reuse, "radiance unchanged" };
+    return { PassDecision::Action::Run, "radiance was re-injected" };
 }
 
 void MipmapPass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    m_builder.listCells(frame.shaders, v.frame.resolution, v.radiance.levels(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
+    m_builder.listCells(frame.shaders, v.frame.resolution, v.radiance.levels(),
+        v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
     } else {

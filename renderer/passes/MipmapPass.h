@@ -14,7 +14,10 @@ namespace vct::render {
 class MipmapPass final : public RenderPass {
 public:
     const char* name() const override { return "mipmaps"; }
-    PassDeclaration declare() const override { return {{Resource::VoxelRadiance}, {Resource::VoxelMips}}; }
+    PassDeclaration declare() const override
+    {
+        return { { Resource::VoxelRadiance }, { Resource::VoxelMips } };
+    }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }

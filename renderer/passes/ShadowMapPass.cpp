@@ -14,8 +14,8 @@ namespace {
 
 std::array<std::uint64_t, 4> keyOf(const FrameContext& frame)
 {
-    return {frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lightPlacement,
-        std::uint64_t(frame.settings.shadowMapSize)};
+    return { frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lightPlacement,
+        std::uint64_t(frame.settings.shadowMapSize) };
 }
 
 bool anyShadowCaster(const Scene& scene)
@@ -34,18 +34,21 @@ bool anyShadowCaster(const Scene& scene)
 PassDecision ShadowMapPass::plan(const FrameContext& frame)
 {
     if (!anyShadowCaster(frame.scene.scene()))
-        return {PassDecision::Action::Skip, "no shadow-casting light"};
+        return { PassDecision::Action::Skip, "no shadow-casting light" };
     if (keyOf(frame) == m_key)
-        return {PassDecision::Action::Reuse, "lights and geometry unchanged"};
-    return {PassDecision::Action::Run, m_key == decltype(m_key){} ? "no valid output yet" : "lights or geometry changed"};
+        return { PassDecision::Action::Reuse, "lights and geometry unchanged" };
+    return { PassDecision::Action::Run,
+        m_key == decltype(m_key) {} ? "no valid output yet" : "lights or geometry changed" };
 }
 
-void ShadowMapPass::ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer)
+void ShadowMapPass::ensureTextures(
+    ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer)
 {
     if (shadows.size != size || shadows.pointDepth.depth() != 6 * std::max(points, 1)
         || shadows.directionalDepth.depth() != std::max(directionals, 1)) {
         shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
-        shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
+        shadows.directionalDepth
+            = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
         shadows.pointDepth.setDepthComparison();
         shadows.directionalDepth.setDepthComparison();
         shadows.size = size;
@@ -55,7 +58,8 @@ void ShadowMapPass::ensureTextures(ShadowMaps& shadows, int size, int points, in
     }
     if (staticLayer && !m_staticPoint) {
         m_staticPoint = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
-        m_staticDirectional = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
+        m_staticDirectional
+            = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
         m_staticKey = {};
     }
     if (!shadows.framebuffer)
@@ -76,13 +80,17 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
     shadows.framebuffer.bind();
     const float clearDepth = 1.0f;
     // Standard cube-map face orientation, so texture(samplerCubeArray, direction) finds the right texel.
-    static const glm::vec3 kFaceDirection[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    const glm::mat4 cubeProjection = glm::perspective(glm::radians(90.0f), 1.0f, shadows.pointNear, shadows.pointFar);
+    static const glm::vec3 kFaceDirection[6]
+        = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+    static const glm::vec3 kFaceUp[6]
+        = { { 0, -1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }, { 0, -1, 0 }, { 0, -1, 0 } };
+    const glm::mat4 cubeProjection
+        = glm::perspective(glm::radians(90.0f), 1.0f, shadows.pointNear, shadows.pointFar);
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
         m_program.set("uOrigin", light.position);
-        const Viewpoint eye{light.position, 1.01f * shadows.pointNear * std::sqrt(3.0f)}; // 90-degree faces
+        const Viewpoint eye { light.position,
+            1.01f * shadows.pointNear * std::sqrt(3.0f) }; // 90-degree faces
         for (int face = 0; face < 6; ++face) {
             shadows.framebuffer.attachDepthLayer(point, 6 * i + face);
             shadows.framebuffer.finish(0);
@@ -125,7 +133,8 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
 void ShadowMapPass::execute(FrameContext& frame)
 {
     if (!m_program)
-        m_program = frame.shaders.build({"shadow depth", {"shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag"}, {}});
+        m_program = frame.shaders.build(
+            { "shadow depth", { "shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag" }, {} });
     m_key = keyOf(frame);
     const Scene& scene = frame.scene.scene();
     ShadowMaps& shadows = frame.shadows;
@@ -140,12 +149,13 @@ void ShadowMapPass::execute(FrameContext& frame)
     Aabb bounds;
     bounds.extend(frame.voxels.frame.origin);
     bounds.extend(frame.voxels.frame.origin + glm::vec3(frame.voxels.frame.extent));
-    // The floors only keep a degenerate (empty or point-sized) grid from giving a zero depth range; they are far
-    // below any scene size, so tiny scenes keep their proportions (tests/hardcases, scale invariance).
+    // The floors only keep a degenerate (empty or point-sized) grid from giving a zero depth range; they are
+    // far below any scene size, so tiny scenes keep their proportions (tests/hardcases, scale invariance).
     const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-20f);
     shadows.pointFar = 0.0f;
     for (int i = 0; i < points; ++i)
-        shadows.pointFar = std::max(shadows.pointFar, glm::length(scene.pointLights[std::size_t(i)].position - bounds.center()) + radius);
+        shadows.pointFar = std::max(shadows.pointFar,
+            glm::length(scene.pointLights[std::size_t(i)].position - bounds.center()) + radius);
     shadows.pointFar = std::max(shadows.pointFar * 1.01f, 1e-20f);
     // Relative to the far plane only: an absolute floor would clip most of a scene measured in 1e-4 units.
     shadows.pointNear = shadows.pointFar * 1e-4f;
@@ -154,22 +164,25 @@ void ShadowMapPass::execute(FrameContext& frame)
         const glm::vec3 dir = glm::normalize(scene.directionalLights[std::size_t(i)].direction);
         const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
         const glm::mat4 view = glm::lookAt(bounds.center() - dir * (2.0f * radius), bounds.center(), up);
-        shadows.directionalMatrices.push_back(glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) * view);
+        shadows.directionalMatrices.push_back(
+            glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) * view);
     }
 
     if (!dynamicLayer) {
         drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::All, true);
     } else {
         // Static casters are drawn once into their own maps; a moving object costs a copy and its own draw.
-        const std::array<std::uint64_t, 3> staticKey{frame.versions.staticGeometry, frame.versions.lightPlacement, std::uint64_t(size)};
+        const std::array<std::uint64_t, 3> staticKey { frame.versions.staticGeometry,
+            frame.versions.lightPlacement, std::uint64_t(size) };
         if (staticKey != m_staticKey) {
             drawMaps(frame, m_staticPoint, m_staticDirectional, MeshFilter::Static, true);
             m_staticKey = staticKey;
         }
         glCopyImageSubData(m_staticPoint.id(), GL_TEXTURE_CUBE_MAP_ARRAY, 0, 0, 0, 0, shadows.pointDepth.id(),
             GL_TEXTURE_CUBE_MAP_ARRAY, 0, 0, 0, 0, size, size, shadows.pointDepth.depth());
-        glCopyImageSubData(m_staticDirectional.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, shadows.directionalDepth.id(),
-            GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, size, size, shadows.directionalDepth.depth());
+        glCopyImageSubData(m_staticDirectional.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0,
+            shadows.directionalDepth.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, size, size,
+            shadows.directionalDepth.depth());
         drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::Dynamic, false);
     }
     ++shadows.version;

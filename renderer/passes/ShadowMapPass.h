@@ -1,8 +1,8 @@
 #pragma once
 
-#include "core/RenderPass.h"
 #include "core/FrameResources.h"
 #include "core/GpuScene.h"
+#include "core/RenderPass.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
@@ -11,11 +11,12 @@
 
 namespace vct::render {
 
-/** Depth maps for every shadow-casting light: a cube per point light, an orthographic map per directional one. */
+/** Depth maps for every shadow-casting light: a cube per point light, an orthographic map per directional
+ * one. */
 class ShadowMapPass final : public RenderPass {
 public:
     const char* name() const override { return "shadow maps"; }
-    PassDeclaration declare() const override { return {{}, {Resource::ShadowMaps}}; }
+    PassDeclaration declare() const override { return { {}, { Resource::ShadowMaps } }; }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
     void invalidate() override
@@ -26,13 +27,14 @@ public:
 
 private:
     void ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer);
-    void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional, MeshFilter filter, bool clear);
+    void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
+        MeshFilter filter, bool clear);
 
     gl::Program m_program;
-    gl::Texture m_staticPoint;       ///< static casters only, when dynamic meshes exist
+    gl::Texture m_staticPoint; ///< static casters only, when dynamic meshes exist
     gl::Texture m_staticDirectional;
-    std::array<std::uint64_t, 4> m_key{};
-    std::array<std::uint64_t, 3> m_staticKey{};
+    std::array<std::uint64_t, 4> m_key {};
+    std::array<std::uint64_t, 3> m_staticKey {};
 };
 
 } // namespace vct::render

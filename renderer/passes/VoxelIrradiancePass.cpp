@@ -16,14 +16,15 @@ bool VoxelIrradiancePass::inUse(const FrameContext& frame)
 VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    return {s.anisotropicMips, s.bounces, s.diffuseConeCount, s.diffuseApertureDeg, s.stepFactor, s.maxDistance,
-        s.coneOffsetVoxels, frame.voxels.frame.resolution, FrameRules::ambientOcclusionNeeded(frame), s.irradianceCellSize};
+    return { s.anisotropicMips, s.bounces, s.diffuseConeCount, s.diffuseApertureDeg, s.stepFactor,
+        s.maxDistance, s.coneOffsetVoxels, frame.voxels.frame.resolution,
+        FrameRules::ambientOcclusionNeeded(frame), s.irradianceCellSize };
 }
 
 VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& frame)
 {
-    return {frame.projection * frame.view, frame.screen.width, frame.screen.height, frame.screen.indirectDivisor,
-        frame.versions.staticGeometry, frame.versions.dynamicGeometry};
+    return { frame.projection * frame.view, frame.screen.width, frame.screen.height,
+        frame.screen.indirectDivisor, frame.versions.staticGeometry, frame.versions.dynamicGeometry };
 }
 
 PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
@@ -35,32 +36,33 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
         v.irradianceNormal = gl::Texture();
         v.irradianceRequested = gl::Texture();
         m_radianceVersion = 0;
-        return {PassDecision::Action::Skip,
-            frame.settings.irradianceCache ? "no diffuse light needed" : "irradiance cache off: cones per pixel"};
+        return { PassDecision::Action::Skip,
+            frame.settings.irradianceCache ? "no diffuse light needed"
+                                           : "irradiance cache off: cones per pixel" };
     }
-    const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion && v.bouncedVersion == m_bouncedVersion
-        && keyOf(frame) == m_key;
+    const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion
+        && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key;
     if (!lightKept)
-        return {PassDecision::Action::Run,
+        return { PassDecision::Action::Run,
             std::string(v.irradiance ? "voxel light or a gather setting changed" : "no valid output yet")
-                + ": gathering the cells in view"};
+                + ": gathering the cells in view" };
     if (viewOf(frame) == m_view)
-        return {PassDecision::Action::Reuse, "voxel light and view unchanged"};
-    return {PassDecision::Action::Run, "view changed: gathering only the cells that came into view"};
+        return { PassDecision::Action::Reuse, "voxel light and view unchanged" };
+    return { PassDecision::Action::Run, "view changed: gathering only the cells that came into view" };
 }
 
 void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
 {
     if (!v.irradiance || v.irradiance.width() != cells) {
-        for (gl::Texture* t : {&v.irradiance, &v.irradianceBack, &v.irradianceNormal}) {
+        for (gl::Texture* t : { &v.irradiance, &v.irradianceBack, &v.irradianceNormal }) {
             *t = gl::Texture::create3D(GL_RGBA16F, cells);
             t->setFilter(GL_NEAREST, GL_NEAREST);
         }
         v.irradianceRequested = gl::Texture::create3D(GL_R32UI, cells);
     }
     // Every texel must be finite for the NaN/Inf check; lookups never read a cell that was not requested.
-    const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
-    const float noSurface[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float none[4] = { 0.0f, 0.0f, 0.0f, -1.0f };
+    const float noSurface[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearTexImage(v.irradiance.id(), 0, GL_RGBA, GL_FLOAT, none);
     glClearTexImage(v.irradianceBack.id(), 0, GL_RGBA, GL_FLOAT, none);
     glClearTexImage(v.irradianceNormal.id(), 0, GL_RGBA, GL_FLOAT, noSurface);
@@ -72,12 +74,15 @@ void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
 void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew)
 {
     if (!m_request[0]) {
-        const std::vector<std::string> stages{"common/FullScreen.vert", "irradiance/RequestCells.frag"};
-        m_request[0] = frame.shaders.build({"irradiance cache: request cells", stages, {}});
-        m_request[1] = frame.shaders.build({"irradiance cache: request and list new cells", stages, {"LIST_NEW"}});
-        m_listRequested[0] = frame.shaders.build({"irradiance cache: list requested cells", {"irradiance/ListRequested.comp"}, {}});
-        m_listRequested[1] = frame.shaders.build({"irradiance cache: list requested cells, from the new ones",
-            {"irradiance/ListRequested.comp"}, {"FROM_LIST"}});
+        const std::vector<std::string> stages { "common/FullScreen.vert", "irradiance/RequestCells.frag" };
+        m_request[0] = frame.shaders.build({ "irradiance cache: request cells", stages, {} });
+        m_request[1]
+            = frame.shaders.build({ "irradiance cache: request and list new cells", stages, { "LIST_NEW" } });
+        m_listRequested[0] = frame.shaders.build(
+            { "irradiance cache: list requested cells", { "irradiance/ListRequested.comp" }, {} });
+        m_listRequested[1]
+            = frame.shaders.build({ "irradiance cache: list requested cells, from the new ones",
+                { "irradiance/ListRequested.comp" }, { "FROM_LIST" } });
         m_emptyVao = gl::VertexArray::create();
     }
     gl::Program& request = m_request[fewNew ? 1 : 0];
@@ -111,7 +116,8 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glMemoryBarrier(
+        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     v.albedo.bindUnit(0);
     lister.use();
@@ -133,22 +139,23 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const bool anisotropic = frame.settings.anisotropicMips && v.directional;
     gl::Program& program = m_gather[anisotropic ? 1 : 0];
     if (!program) {
-        program = frame.shaders.build({anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
-            {"irradiance/GatherCells.comp"}, anisotropic ? std::vector<std::string>{"ANISOTROPIC"} : std::vector<std::string>{}});
+        program = frame.shaders.build({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
+            { "irradiance/GatherCells.comp" },
+            anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
     }
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
-    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion && v.bouncedVersion == m_bouncedVersion
-                           && keyOf(frame) == m_key)
+    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion
+                           && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key)
         || v.irradiance.width() != cells;
     if (fresh)
         forgetCells(v, cells);
     requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
-    ConeTracingSetup::applyCellGather(program, frame, anisotropic, true, cellSize, FrameRules::ambientOcclusionNeeded(frame),
-        v.irradiance, v.irradianceBack, v.irradianceNormal);
+    ConeTracingSetup::applyCellGather(program, frame, anisotropic, true, cellSize,
+        FrameRules::ambientOcclusionNeeded(frame), v.irradiance, v.irradianceBack, v.irradianceNormal);
     program.use();
     m_requested.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

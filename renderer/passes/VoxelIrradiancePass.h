@@ -33,7 +33,8 @@ public:
     const char* name() const override { return "irradiance cache"; }
     PassDeclaration declare() const override
     {
-        return {{Resource::VoxelMaterials, Resource::VoxelMips, Resource::GBuffer}, {Resource::VoxelIrradiance}};
+        return { { Resource::VoxelMaterials, Resource::VoxelMips, Resource::GBuffer },
+            { Resource::VoxelIrradiance } };
     }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
@@ -48,7 +49,7 @@ private:
     static GatherKey keyOf(const FrameContext& frame);
     /** What decides which cells the traced pixels look up: the camera, the pixel grids and the geometry. */
     struct ViewKey {
-        glm::mat4 viewProjection{0.0f};
+        glm::mat4 viewProjection { 0.0f };
         int width = 0, height = 0, divisor = 0;
         std::uint64_t staticGeometry = 0, dynamicGeometry = 0;
         bool operator==(const ViewKey& other) const = default;
@@ -63,16 +64,16 @@ private:
     void requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew);
 
     gl::Program m_gather[2]; ///< [0] box-filtered mips, [1] anisotropic
-    gl::Program m_request[2];       ///< [1]: LIST_NEW
+    gl::Program m_request[2]; ///< [1]: LIST_NEW
     gl::Program m_listRequested[2]; ///< [1]: FROM_LIST
     gl::Framebuffer m_requestTarget; ///< no attachments, the traced pixels' size
     int m_requestWidth = 0, m_requestHeight = 0;
     gl::VertexArray m_emptyVao;
-    OccupiedCellList m_newCells;  ///< listed by the request pass after a camera move
+    OccupiedCellList m_newCells; ///< listed by the request pass after a camera move
     OccupiedCellList m_requested; ///< the cells to gather
     std::uint64_t m_radianceVersion = 0;
     std::uint64_t m_bouncedVersion = 0;
-    GatherKey m_key{};
+    GatherKey m_key {};
     ViewKey m_view;
 };
 

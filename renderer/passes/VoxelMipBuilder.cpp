@@ -11,7 +11,7 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
     const std::vector<const OccupiedCellList*>& occupied)
 {
     if (!m_listParents)
-        m_listParents = shaders.build({"list parent cells", {"mipmap/ListParents.comp"}, {}});
+        m_listParents = shaders.build({ "list parent cells", { "mipmap/ListParents.comp" }, {} });
     const int size = std::max(1, resolution / 2);
     if (!m_listed || m_listed.width() != size)
         m_listed = gl::Texture::create3D(GL_R32UI, size);
@@ -33,14 +33,15 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
         } else {
             m_levelCells[k - 1].dispatchOverCells();
         }
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glMemoryBarrier(
+            GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 }
 
 void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume)
 {
     if (!m_boxProgram)
-        m_boxProgram = shaders.build({"downsample", {"mipmap/Downsample.comp"}, {}});
+        m_boxProgram = shaders.build({ "downsample", { "mipmap/Downsample.comp" }, {} });
     m_boxProgram.use();
     volume.bindUnit(0);
     const int levels = std::min(volume.levels(), int(m_levelCells.size()) + 1);
@@ -54,12 +55,14 @@ void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume
     }
 }
 
-void VoxelMipBuilder::buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source, int resolution,
-    gl::Texture& directional)
+void VoxelMipBuilder::buildDirectional(
+    const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional)
 {
     if (!m_directionalProgram) {
-        m_directionalProgram = shaders.build({"directional downsample", {"mipmap/DownsampleDirectional.comp"}, {}});
-        m_allDirectionsProgram = shaders.build({"directional downsample, first level", {"mipmap/DownsampleAllDirections.comp"}, {}});
+        m_directionalProgram
+            = shaders.build({ "directional downsample", { "mipmap/DownsampleDirectional.comp" }, {} });
+        m_allDirectionsProgram = shaders.build(
+            { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
     }
     const int levels = std::min(source.levels() - 1, int(m_levelCells.size()));
     if (levels < 1)

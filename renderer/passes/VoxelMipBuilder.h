@@ -25,7 +25,8 @@ public:
      * Lists the cells of every level above level 0 that lie above the voxels of @p occupied (lists of level-0
      * voxels that together name every voxel holding anything, duplicates allowed; core/OccupiedCellList).
      */
-    void listCells(const ShaderLibrary& shaders, int resolution, int levels, const std::vector<const OccupiedCellList*>& occupied);
+    void listCells(const ShaderLibrary& shaders, int resolution, int levels,
+        const std::vector<const OccupiedCellList*>& occupied);
     /** Levels 1..N of @p volume from its level 0. */
     void buildBox(const ShaderLibrary& shaders, gl::Texture& volume);
     /**
@@ -33,14 +34,16 @@ public:
      * level 0 of @p source into the tiles of @p directional (a gl::Texture::create3DStack, (re)allocated as
      * needed).
      */
-    void buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
+    void buildDirectional(
+        const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
 
 private:
     gl::Program m_boxProgram;
     gl::Program m_directionalProgram;
     gl::Program m_allDirectionsProgram;
     gl::Program m_listParents;
-    gl::Texture m_listed; ///< r32ui over the cells of level 1: bit k set where the cell of level k + 1 is listed
+    gl::Texture
+        m_listed; ///< r32ui over the cells of level 1: bit k set where the cell of level k + 1 is listed
     std::vector<OccupiedCellList> m_levelCells; ///< [k]: the listed cells of grid level k + 1
 };
 

@@ -16,23 +16,26 @@ constexpr int kDynamicMargin = 2;
 PassDecision VoxelizePass::plan(const FrameContext& frame)
 {
     if (m_staticGeometry == 0)
-        return {PassDecision::Action::Run, "no valid output yet"};
+        return { PassDecision::Action::Run, "no valid output yet" };
     if (m_staticGeometry != frame.versions.staticGeometry)
-        return {PassDecision::Action::Run, "static geometry or grid changed"};
+        return { PassDecision::Action::Run, "static geometry or grid changed" };
     if (m_staticMaterials != frame.versions.staticMaterials)
-        return {PassDecision::Action::Run, "a static material changed: re-voxelizing the objects that use it"};
+        return { PassDecision::Action::Run,
+            "a static material changed: re-voxelizing the objects that use it" };
     if (m_dynamicVersion != frame.versions.dynamicVoxels())
-        return {PassDecision::Action::Run, "a dynamic object moved: static voxels kept, dynamic ones redone"};
-    return {PassDecision::Action::Reuse, "geometry unchanged"};
+        return { PassDecision::Action::Run,
+            "a dynamic object moved: static voxels kept, dynamic ones redone" };
+    return { PassDecision::Action::Reuse, "geometry unchanged" };
 }
 
 void VoxelizePass::ensureResources(FrameContext& frame)
 {
     if (!m_voxelize) {
-        const std::vector<std::string> stages{"voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag"};
-        m_voxelize = frame.shaders.build({"voxelize", stages, {}});
-        m_voxelizeEmissive = frame.shaders.build({"voxelize (emissive)", stages, {"EMISSIVE"}});
-        m_resolve = frame.shaders.build({"voxel resolve", {"voxelize/Resolve.comp"}, {}});
+        const std::vector<std::string> stages { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom",
+            "voxelize/Voxelize.frag" };
+        m_voxelize = frame.shaders.build({ "voxelize", stages, {} });
+        m_voxelizeEmissive = frame.shaders.build({ "voxelize (emissive)", stages, { "EMISSIVE" } });
+        m_resolve = frame.shaders.build({ "voxel resolve", { "voxelize/Resolve.comp" }, {} });
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -43,7 +46,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     v.accumulators = gl::Texture::create3D(GL_R32F, 4 * res, 3 * res, res);
     const float zero = 0.0f;
     glClearTexImage(v.accumulators.id(), 0, GL_RED, GL_FLOAT, &zero);
-    v.dynamicBounds = Aabb{};
+    v.dynamicBounds = Aabb {};
     v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
     v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
     v.staticEmission = gl::Texture::create3D(GL_RGBA16F, res);
@@ -53,12 +56,14 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
     v.opacity = gl::Texture::create3D(GL_RGBA8, res, levels);
     v.opacityVersion = 0;
-    for (gl::Texture* t : {&v.staticAlbedo, &v.staticNormal, &v.staticEmission, &v.albedo, &v.normal, &v.emission})
+    for (gl::Texture* t :
+        { &v.staticAlbedo, &v.staticNormal, &v.staticEmission, &v.albedo, &v.normal, &v.emission })
         t->setFilter(GL_NEAREST, GL_NEAREST);
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
-void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched)
+void VoxelizePass::accumulate(
+    FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -76,7 +81,7 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
     const MeshFilter layer = dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static;
-    for (const bool emissive : {false, true}) {
+    for (const bool emissive : { false, true }) {
         gl::Program& program = emissive ? m_voxelizeEmissive : m_voxelize;
         program.use();
         program.set("uGridOrigin", v.frame.origin);
@@ -96,26 +101,28 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, const Vox
         glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glMemoryBarrier(
+        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
-    const OccupiedCellList& touched)
+void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer,
+    const VoxelRegion& region, const OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     // Untouched voxels take the static layer's values (merging) or none: a copy or a clear of the region, far
     // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are averaged.
     const glm::ivec3 lo = region.lo, size = region.size();
-    const gl::Texture* outputs[3] = {intoStaticLayer ? &v.staticAlbedo : &v.albedo,
-        intoStaticLayer ? &v.staticNormal : &v.normal, intoStaticLayer ? &v.staticEmission : &v.emission};
-    const gl::Texture* statics[3] = {&v.staticAlbedo, &v.staticNormal, &v.staticEmission};
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const gl::Texture* outputs[3] = { intoStaticLayer ? &v.staticAlbedo : &v.albedo,
+        intoStaticLayer ? &v.staticNormal : &v.normal, intoStaticLayer ? &v.staticEmission : &v.emission };
+    const gl::Texture* statics[3] = { &v.staticAlbedo, &v.staticNormal, &v.staticEmission };
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     for (int i = 0; i < 3; ++i) {
         if (mergeStatic)
-            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(), GL_TEXTURE_3D, 0,
-                lo.x, lo.y, lo.z, size.x, size.y, size.z);
+            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(),
+                GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, size.x, size.y, size.z);
         else
-            glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
+            glClearTexSubImage(
+                outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
@@ -139,8 +146,8 @@ void VoxelizePass::execute(FrameContext& frame)
     // A material edit redoes the static voxels around the meshes that use it: every static mesh is drawn, but
     // fragments outside that box are dropped and only the box is resolved.
     const VoxelRegion staticRegion = staticChanged ? whole
-        : staticMaterialChanged                    ? VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin)
-                                                   : VoxelRegion{};
+        : staticMaterialChanged ? VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin)
+                                : VoxelRegion {};
     if (!staticRegion.isEmpty()) {
         // A material edit keeps the occupied voxels, so the full rebuild's list of them stays whole.
         OccupiedCellList& touched = staticChanged ? v.staticVoxels : m_editedVoxels;
@@ -163,9 +170,10 @@ void VoxelizePass::execute(FrameContext& frame)
             region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
         if (staticChanged) {
             const glm::ivec3 size(v.frame.resolution);
-            for (const auto& [from, to] : {std::pair{&v.staticAlbedo, &v.albedo}, std::pair{&v.staticNormal, &v.normal},
-                     std::pair{&v.staticEmission, &v.emission}})
-                glCopyImageSubData(from->id(), GL_TEXTURE_3D, 0, 0, 0, 0, to->id(), GL_TEXTURE_3D, 0, 0, 0, 0, size.x, size.y, size.z);
+            for (const auto& [from, to] : { std::pair { &v.staticAlbedo, &v.albedo },
+                     std::pair { &v.staticNormal, &v.normal }, std::pair { &v.staticEmission, &v.emission } })
+                glCopyImageSubData(from->id(), GL_TEXTURE_3D, 0, 0, 0, 0, to->id(), GL_TEXTURE_3D, 0, 0, 0, 0,
+                    size.x, size.y, size.z);
             region = now;
         }
         accumulate(frame, true, region, v.dynamicVoxels);

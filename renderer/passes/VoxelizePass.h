@@ -18,7 +18,7 @@ namespace vct::render {
 class VoxelizePass final : public RenderPass {
 public:
     const char* name() const override { return "voxelize"; }
-    PassDeclaration declare() const override { return {{}, {Resource::VoxelMaterials}}; }
+    PassDeclaration declare() const override { return { {}, { Resource::VoxelMaterials } }; }
     PassDecision plan(const FrameContext& frame) override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_staticGeometry = m_staticMaterials = m_dynamicVersion = 0; }
@@ -26,7 +26,8 @@ public:
 private:
     void ensureResources(FrameContext& frame);
     /** Sums the fragments of one layer's meshes in the region, listing each voxel reached into @p touched. */
-    void accumulate(FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched);
+    void accumulate(
+        FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched);
     void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
         const OccupiedCellList& touched);
 

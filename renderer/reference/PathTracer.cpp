@@ -129,7 +129,8 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
                         origin, toLightUnit, glm::length(light.position - origin) * kShadowRayShortening))
                     continue;
             }
-            result += throughput * reflected * light.intensity * light.spotFactor(-toLightUnit) / distanceSquared;
+            result += throughput * reflected * light.intensity * light.spotFactor(-toLightUnit)
+                / distanceSquared;
         }
         for (const DirectionalLight& light : m_directionalLights) {
             const glm::vec3 toLight = -light.direction;

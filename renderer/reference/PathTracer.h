@@ -23,10 +23,11 @@ namespace vct::render {
  * (power heuristic) between the two for emissive triangles (point and directional lights are reached by
  * next-event estimation only), and Russian roulette with survival probability from the path throughput.
  *
- * Conventions (those of the GL renderer and of the Cycles references in tests/data/reference): emission is radiance leaving the front face
- * only (counter-clockwise winding) and the back of an emitter only reflects; surfaces are shaded two-sided
- * from the side the ray arrives on; lights that do not cast shadows light through geometry. Holds references
- * to nothing: it copies the scene data it needs. Thread-safe: radiance() may run on many threads at once.
+ * Conventions (those of the GL renderer and of the Cycles references in tests/data/reference): emission is
+ * radiance leaving the front face only (counter-clockwise winding) and the back of an emitter only reflects;
+ * surfaces are shaded two-sided from the side the ray arrives on; lights that do not cast shadows light
+ * through geometry. Holds references to nothing: it copies the scene data it needs. Thread-safe: radiance()
+ * may run on many threads at once.
  */
 class PathTracer {
 public:

@@ -9,8 +9,8 @@ namespace vct::render {
 
 /** Axis-aligned box; empty until a point is added. */
 struct Aabb {
-    glm::vec3 min{std::numeric_limits<float>::max()};
-    glm::vec3 max{-std::numeric_limits<float>::max()};
+    glm::vec3 min { std::numeric_limits<float>::max() };
+    glm::vec3 max { -std::numeric_limits<float>::max() };
 
     bool isEmpty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
     void extend(const glm::vec3& p)
@@ -28,7 +28,10 @@ struct Aabb {
     glm::vec3 size() const { return isEmpty() ? glm::vec3(0.0f) : max - min; }
     glm::vec3 center() const { return (min + max) * 0.5f; }
     /** The same box moved by @p offset (empty stays empty). */
-    Aabb translated(const glm::vec3& offset) const { return isEmpty() ? *this : Aabb{min + offset, max + offset}; }
+    Aabb translated(const glm::vec3& offset) const
+    {
+        return isEmpty() ? *this : Aabb { min + offset, max + offset };
+    }
 };
 
 } // namespace vct::render

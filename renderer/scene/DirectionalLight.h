@@ -6,8 +6,8 @@ namespace vct::render {
 
 /** A light at infinity, such as the sun. */
 struct DirectionalLight {
-    glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< The way the light travels (need not be normalised).
-    glm::vec3 irradiance{1.0f};             ///< W/m^2 on a surface facing the light, per channel.
+    glm::vec3 direction { 0.0f, -1.0f, 0.0f }; ///< The way the light travels (need not be normalised).
+    glm::vec3 irradiance { 1.0f }; ///< W/m^2 on a surface facing the light, per channel.
     bool castsShadows = true;
 };
 

@@ -13,11 +13,11 @@ namespace vct::render {
  */
 struct Material {
     std::string name;
-    glm::vec3 albedo{0.8f};        ///< Lambertian albedo (OBJ Kd), in [0,1].
-    glm::vec3 emission{0.0f};      ///< Emitted radiance, W/(m^2 sr), front face only (OBJ Ke).
-    glm::vec3 specular{0.0f};      ///< Specular reflectance (OBJ Ks); albedo + specular <= 1.
-    float shininess = 0.0f;        ///< Phong exponent (OBJ Ns); 0 means not glossy.
-    int albedoTexture = -1;        ///< Index into Scene::textures (sRGB, multiplies albedo), or -1.
+    glm::vec3 albedo { 0.8f }; ///< Lambertian albedo (OBJ Kd), in [0,1].
+    glm::vec3 emission { 0.0f }; ///< Emitted radiance, W/(m^2 sr), front face only (OBJ Ke).
+    glm::vec3 specular { 0.0f }; ///< Specular reflectance (OBJ Ks); albedo + specular <= 1.
+    float shininess = 0.0f; ///< Phong exponent (OBJ Ns); 0 means not glossy.
+    int albedoTexture = -1; ///< Index into Scene::textures (sRGB, multiplies albedo), or -1.
     /// Seen from both sides: a back face is drawn and shaded from the side it is seen from. Off, the surface
     /// shows its front faces only (glTF's doubleSided false): the g-buffer and the shadow maps leave its back
     /// faces out, which costs no pixels on closed models seen from outside and spares their rasterisation.

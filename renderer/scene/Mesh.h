@@ -14,12 +14,12 @@ namespace vct::render {
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;   ///< Per vertex, unit length; same count as positions.
-    std::vector<glm::vec2> uvs;       ///< Empty, or one per vertex.
+    std::vector<glm::vec3> normals; ///< Per vertex, unit length; same count as positions.
+    std::vector<glm::vec2> uvs; ///< Empty, or one per vertex.
     std::vector<std::uint32_t> indices; ///< Three per triangle, counter-clockwise front faces.
-    int material = 0;                 ///< Index into Scene::materials.
-    glm::mat4 transform{1.0f};        ///< Object to world.
-    bool dynamic = false;             ///< Re-voxelized when it moves; kept out of the static voxels.
+    int material = 0; ///< Index into Scene::materials.
+    glm::mat4 transform { 1.0f }; ///< Object to world.
+    bool dynamic = false; ///< Re-voxelized when it moves; kept out of the static voxels.
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -10,15 +10,16 @@
 namespace vct::render {
 
 /**
- * A point light, isotropic or a spot. Radiance reflected by a Lambert surface at distance d: albedo/pi * I/d^2
+ * A point light, isotropic or a spot. Radiance reflected by a Lambert surface at distance d: albedo/pi *
+ * I/d^2
  * * cos, times spotFactor(). A spot keeps its full intensity within spotInnerDeg of its axis, none beyond
  * spotOuterDeg, and a smoothstep in the cosine between (the angles are from the axis, as glTF's).
  */
 struct PointLight {
-    glm::vec3 position{0.0f};   ///< World space, metres.
-    glm::vec3 intensity{1.0f};  ///< Radiant intensity on the axis, W/sr per channel.
+    glm::vec3 position { 0.0f }; ///< World space, metres.
+    glm::vec3 intensity { 1.0f }; ///< Radiant intensity on the axis, W/sr per channel.
     bool castsShadows = true;
-    glm::vec3 spotDirection{0.0f, -1.0f, 0.0f}; ///< The way the spot points (unit length).
+    glm::vec3 spotDirection { 0.0f, -1.0f, 0.0f }; ///< The way the spot points (unit length).
     float spotInnerDeg = 180.0f; ///< 180 and 180: an isotropic point light.
     float spotOuterDeg = 180.0f;
 

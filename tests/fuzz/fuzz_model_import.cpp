@@ -14,7 +14,10 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     const QByteArray bytes(reinterpret_cast<const char*>(data), qsizetype(size));
-    const char* extension = bytes.startsWith("ply") ? "ply" : bytes.startsWith("{") ? "gltf" : bytes.startsWith("solid") ? "stl" : "obj";
+    const char* extension = bytes.startsWith("ply") ? "ply"
+        : bytes.startsWith("{")                     ? "gltf"
+        : bytes.startsWith("solid")                 ? "stl"
+                                                    : "obj";
     static const QString dir = QDir::tempPath() + QStringLiteral("/vct-fuzz-") + QString::number(getpid());
     QDir().mkpath(dir);
     const QString path = dir + QStringLiteral("/input.") + QLatin1String(extension);

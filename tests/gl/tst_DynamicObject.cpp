@@ -33,12 +33,14 @@ render::Scene DynamicObjectTest::scene() const
 {
     render::Scene s;
     s.materials.push_back({});
-    s.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1})));
+    s.meshes.push_back(
+        test::makeTriangles(test::quad({ 1, 0.5f, 15 }, { 15, 0.5f, 15 }, { 15, 0.5f, 1 }, { 1, 0.5f, 1 })));
     // A small horizontal plate, dynamic, at y = 4.5 over x,z in [3.2, 4.8].
-    render::Mesh plate = test::makeTriangles(test::quad({3.2f, 4.5f, 4.8f}, {4.8f, 4.5f, 4.8f}, {4.8f, 4.5f, 3.2f}, {3.2f, 4.5f, 3.2f}));
+    render::Mesh plate = test::makeTriangles(
+        test::quad({ 3.2f, 4.5f, 4.8f }, { 4.8f, 4.5f, 4.8f }, { 4.8f, 4.5f, 3.2f }, { 3.2f, 4.5f, 3.2f }));
     plate.dynamic = true;
     s.meshes.push_back(plate);
-    s.pointLights.push_back({{8, 12, 8}, glm::vec3(50.0f), true});
+    s.pointLights.push_back({ { 8, 12, 8 }, glm::vec3(50.0f), true });
     return s;
 }
 
@@ -64,7 +66,7 @@ void DynamicObjectTest::movingDynamicMeshRevoxelizesOnlyItself()
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene());
     m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
-    const render::Camera camera{{8, 8, 30}, {8, 4, 8}, {0, 1, 0}, 40.0f, 0.01f};
+    const render::Camera camera { { 8, 8, 30 }, { 8, 4, 8 }, { 0, 1, 0 }, 40.0f, 0.01f };
     m_gl.renderer->renderFrame(camera, 16, 16);
     QCOMPARE(occupancy(4, 4, 4), 1.0f);
     QCOMPARE(occupancy(10, 4, 4), 0.0f);
@@ -74,9 +76,9 @@ void DynamicObjectTest::movingDynamicMeshRevoxelizesOnlyItself()
     const render::FrameStats moved = m_gl.renderer->renderFrame(camera, 16, 16);
     QCOMPARE(pass(moved, "voxelize").action, std::string("run"));
     QVERIFY(pass(moved, "voxelize").reason.find("dynamic") != std::string::npos);
-    QCOMPARE(occupancy(4, 4, 4), 0.0f);  // the old place is empty again
+    QCOMPARE(occupancy(4, 4, 4), 0.0f); // the old place is empty again
     QCOMPARE(occupancy(10, 4, 4), 1.0f); // the new place is filled
-    QCOMPARE(occupancy(7, 0, 7), 1.0f);  // the static floor is still there
+    QCOMPARE(occupancy(7, 0, 7), 1.0f); // the static floor is still there
     const render::RadianceImage incremental = m_gl.renderer->readFrame();
 
     // The same state rendered from scratch gives the same image.
@@ -87,20 +89,24 @@ void DynamicObjectTest::movingDynamicMeshRevoxelizesOnlyItself()
     const render::RadianceImage full = m_gl.renderer->readFrame();
     for (std::size_t i = 0; i < full.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            QVERIFY2(std::abs(full.pixels[i][c] - incremental.pixels[i][c]) <= 1e-3f * (1.0f + std::abs(full.pixels[i][c])),
-                qPrintable(QString("pixel %1: %2 vs %3").arg(i).arg(incremental.pixels[i][c]).arg(full.pixels[i][c])));
+            QVERIFY2(std::abs(full.pixels[i][c] - incremental.pixels[i][c])
+                    <= 1e-3f * (1.0f + std::abs(full.pixels[i][c])),
+                qPrintable(QString("pixel %1: %2 vs %3")
+                               .arg(i)
+                               .arg(incremental.pixels[i][c])
+                               .arg(full.pixels[i][c])));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 
 void DynamicObjectTest::cameraOnlyFrameReusesVoxels()
 {
     m_gl.renderer->setScene(scene());
-    const render::Camera a{{8, 8, 30}, {8, 4, 8}, {0, 1, 0}, 40.0f, 0.01f};
+    const render::Camera a { { 8, 8, 30 }, { 8, 4, 8 }, { 0, 1, 0 }, 40.0f, 0.01f };
     m_gl.renderer->renderFrame(a, 16, 16);
     render::Camera b = a;
     b.position.x += 1.0f;
     const render::FrameStats stats = m_gl.renderer->renderFrame(b, 16, 16);
-    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
         QCOMPARE(pass(stats, name).action, std::string("reused"));
     QCOMPARE(pass(stats, "cone trace").action, std::string("run"));
 }

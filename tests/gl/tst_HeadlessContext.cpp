@@ -41,9 +41,9 @@ void HeadlessContextTest::backendGives45Core()
     render::Scene scene;
     scene.materials.push_back({});
     render::Mesh mesh;
-    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-    mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
-    mesh.indices = {0, 1, 2};
+    mesh.positions = { { -1, -1, 0 }, { 1, -1, 0 }, { 0, 1, 0 } };
+    mesh.normals = { { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 } };
+    mesh.indices = { 0, 1, 2 };
     scene.meshes.push_back(mesh);
     scene.materials[0].emission = glm::vec3(2.0f);
     scene.materials[0].albedo = glm::vec3(0.0f); // an emitter that reflects nothing reads exactly its Ke
@@ -51,9 +51,10 @@ void HeadlessContextTest::backendGives45Core()
     settings.voxelResolution = 16;
     renderer.setSettings(settings);
     renderer.setScene(scene);
-    renderer.renderFrame(render::Camera{}, 16, 16);
+    renderer.renderFrame(render::Camera {}, 16, 16);
     const render::RadianceImage image = renderer.readFrame();
-    QVERIFY2(std::abs(image.at(8, 8).r - 2.0f) < 1e-3f, qPrintable(QString::number(image.at(8, 8).r))); // the emitter's front face
+    QVERIFY2(std::abs(image.at(8, 8).r - 2.0f) < 1e-3f,
+        qPrintable(QString::number(image.at(8, 8).r))); // the emitter's front face
     QCOMPARE(image.at(0, 0), glm::vec3(0.0f));
     QVERIFY(renderer.takeGlErrors().empty());
 }

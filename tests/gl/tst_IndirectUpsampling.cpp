@@ -27,7 +27,8 @@ void IndirectUpsamplingTest::initTestCase()
     m_gl = test::GlTestContext::create();
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
     QString error;
-    QVERIFY2(doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error), qPrintable(error));
+    QVERIFY2(
+        doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error), qPrintable(error));
     m_gl.renderer->setScene(m_scene);
 }
 
@@ -46,11 +47,12 @@ void IndirectUpsamplingTest::reducedResolutionStaysCloseToFull()
 {
     const render::RadianceImage full = renderWith(1);
     QVERIFY(io::ImageMetrics::meanLuminance(full) > 0.0);
-    for (int divisor : {2, 4}) {
+    for (int divisor : { 2, 4 }) {
         const render::RadianceImage reduced = renderWith(divisor);
         QCOMPARE(io::ImageMetrics::nonFiniteCount(reduced), std::size_t(0));
         const double error = io::ImageMetrics::relativeMse(reduced, full);
-        qInfo("indirect diffuse at 1/%d resolution: relative MSE %.5f against every pixel traced", divisor, error);
+        qInfo("indirect diffuse at 1/%d resolution: relative MSE %.5f against every pixel traced", divisor,
+            error);
         // Against the reference the whole renderer is off by ~0.2; the upsampling must add far less.
         QVERIFY2(error < 0.005 * divisor, qPrintable(QString::number(error)));
     }

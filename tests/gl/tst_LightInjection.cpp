@@ -25,12 +25,13 @@ private slots:
 private:
     /** Floor quad y = 0.5 over x,z in [1, 15] of a 16-unit grid at [0, 16]^3; optional occluder above it. */
     render::Scene floorScene(bool occluder);
-    void render(const render::Scene& scene, int resolution = 16, bool anisotropic = false, bool emissionInVoxels = false);
+    void render(const render::Scene& scene, int resolution = 16, bool anisotropic = false,
+        bool emissionInVoxels = false);
     glm::vec4 voxel(const std::string& channel, int x, int y, int z, int level = 0);
     test::GlTestContext m_gl;
-    const glm::vec3 m_albedo{0.6f, 0.5f, 0.4f};
-    const glm::vec3 m_lightPosition{5.0f, 9.0f, 7.0f};
-    const glm::vec3 m_intensity{30.0f, 20.0f, 10.0f};
+    const glm::vec3 m_albedo { 0.6f, 0.5f, 0.4f };
+    const glm::vec3 m_lightPosition { 5.0f, 9.0f, 7.0f };
+    const glm::vec3 m_intensity { 30.0f, 20.0f, 10.0f };
 };
 
 void LightInjectionTest::initTestCase()
@@ -46,14 +47,17 @@ render::Scene LightInjectionTest::floorScene(bool occluder)
     floor.albedo = m_albedo;
     scene.materials.push_back(floor);
     // Floor in the middle of voxel layer y = 0 so the voxel centre lies on it.
-    scene.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1})));
+    scene.meshes.push_back(
+        test::makeTriangles(test::quad({ 1, 0.5f, 15 }, { 15, 0.5f, 15 }, { 15, 0.5f, 1 }, { 1, 0.5f, 1 })));
     if (occluder) // a 2x2 blocker at y = 5.5 over x in [6, 8], z in [7, 9]; its shadow falls around (10, 9.5)
-        scene.meshes.push_back(test::makeTriangles(test::quad({6, 5.5f, 9}, {8, 5.5f, 9}, {8, 5.5f, 7}, {6, 5.5f, 7})));
-    scene.pointLights.push_back({m_lightPosition, m_intensity, true});
+        scene.meshes.push_back(
+            test::makeTriangles(test::quad({ 6, 5.5f, 9 }, { 8, 5.5f, 9 }, { 8, 5.5f, 7 }, { 6, 5.5f, 7 })));
+    scene.pointLights.push_back({ m_lightPosition, m_intensity, true });
     return scene;
 }
 
-void LightInjectionTest::render(const render::Scene& scene, int resolution, bool anisotropic, bool emissionInVoxels)
+void LightInjectionTest::render(
+    const render::Scene& scene, int resolution, bool anisotropic, bool emissionInVoxels)
 {
     render::RenderSettings settings;
     // Emitters are area lights while direct light is on, and their emission then stays out of the voxels:
@@ -64,8 +68,9 @@ void LightInjectionTest::render(const render::Scene& scene, int resolution, bool
     settings.shadowMapSize = 512;
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
-    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f) * 16.0f / float(resolution), glm::vec3(16.0f - 16.0f / float(resolution))));
-    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+    m_gl.renderer->setGridBounds(
+        test::box(glm::vec3(1.0f) * 16.0f / float(resolution), glm::vec3(16.0f - 16.0f / float(resolution))));
+    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
 }
 
 glm::vec4 LightInjectionTest::voxel(const std::string& channel, int x, int y, int z, int level)
@@ -73,13 +78,14 @@ glm::vec4 LightInjectionTest::voxel(const std::string& channel, int x, int y, in
     int size = 0;
     const std::vector<float> data = m_gl.renderer->readVoxels(channel, level, size);
     const float* p = &data[((std::size_t(z) * size + y) * size + x) * 4];
-    return {p[0], p[1], p[2], p[3]};
+    return { p[0], p[1], p[2], p[3] };
 }
 
 void LightInjectionTest::litVoxelMatchesLambertFormula()
 {
     render(floorScene(false));
-    for (const glm::ivec3 v : {glm::ivec3(5, 0, 7), glm::ivec3(2, 0, 3), glm::ivec3(12, 0, 13), glm::ivec3(9, 0, 4)}) {
+    for (const glm::ivec3 v :
+        { glm::ivec3(5, 0, 7), glm::ivec3(2, 0, 3), glm::ivec3(12, 0, 13), glm::ivec3(9, 0, 4) }) {
         const glm::vec3 center = glm::vec3(v) + 0.5f;
         const glm::vec3 toLight = m_lightPosition - center;
         const float d2 = glm::dot(toLight, toLight);
@@ -89,8 +95,13 @@ void LightInjectionTest::litVoxelMatchesLambertFormula()
         QCOMPARE(actual.a, 1.0f);
         for (int c = 0; c < 3; ++c)
             QVERIFY2(std::abs(actual[c] - expected[c]) <= 0.02f * expected[c],
-                qPrintable(QString("voxel (%1,%2,%3) channel %4: %5 vs %6").arg(v.x).arg(v.y).arg(v.z).arg(c)
-                        .arg(actual[c]).arg(expected[c])));
+                qPrintable(QString("voxel (%1,%2,%3) channel %4: %5 vs %6")
+                               .arg(v.x)
+                               .arg(v.y)
+                               .arg(v.z)
+                               .arg(c)
+                               .arg(actual[c])
+                               .arg(expected[c])));
     }
     QCOMPARE(voxel("radiance", 5, 3, 7), glm::vec4(0.0f)); // empty space stays empty
 }
@@ -116,13 +127,14 @@ void LightInjectionTest::directionalLightUsesIrradiance()
     render::Scene scene = floorScene(false);
     scene.pointLights.clear();
     const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, -2.0f, 0.5f));
-    scene.directionalLights.push_back({direction, glm::vec3(3.0f), true});
+    scene.directionalLights.push_back({ direction, glm::vec3(3.0f), true });
     render(scene);
     const float cosTheta = -direction.y;
     const glm::vec3 expected = m_albedo / glm::pi<float>() * 3.0f * cosTheta;
     const glm::vec4 actual = voxel("radiance", 7, 0, 7);
     for (int c = 0; c < 3; ++c)
-        QVERIFY2(std::abs(actual[c] - expected[c]) <= 0.02f * expected[c], qPrintable(QString("%1 vs %2").arg(actual[c]).arg(expected[c])));
+        QVERIFY2(std::abs(actual[c] - expected[c]) <= 0.02f * expected[c],
+            qPrintable(QString("%1 vs %2").arg(actual[c]).arg(expected[c])));
 }
 
 void LightInjectionTest::emissionIsAddedUnshadowed()
@@ -156,11 +168,16 @@ void LightInjectionTest::mipLevelsAreBoxFilters()
                         for (int k = 0; k < block; ++k)
                             for (int j = 0; j < block; ++j)
                                 for (int i = 0; i < block; ++i)
-                                    sum += level0[((std::size_t(z * block + k) * size0 + (y * block + j)) * size0 + (x * block + i)) * 4 + c];
+                                    sum += level0[((std::size_t(z * block + k) * size0 + (y * block + j))
+                                                          * size0
+                                                      + (x * block + i))
+                                            * 4
+                                        + c];
                         const double expected = sum / double(block * block * block);
                         const double actual = mip[((std::size_t(z) * size + y) * size + x) * 4 + c];
                         // Half floats round at every level: allow their relative precision per level.
-                        worst = std::max(worst, std::abs(actual - expected) - 2e-3 * level * std::abs(expected));
+                        worst = std::max(
+                            worst, std::abs(actual - expected) - 2e-3 * level * std::abs(expected));
                     }
         QVERIFY2(worst <= 1e-5, qPrintable(QString("level %1 off by %2").arg(level).arg(worst)));
     }
@@ -177,12 +194,12 @@ void LightInjectionTest::directionalMipsKeepThinWallsOpaque()
     const glm::vec4 isotropic = voxel("radiance", 3, 0, 3, 1);
     QVERIFY(std::abs(isotropic.a - 0.5f) < 1e-3f);
     QVERIFY(std::abs(isotropic.r - 0.5f) < 2e-3f);
-    for (const char* channel : {"radiance+y", "radiance-y"}) {
+    for (const char* channel : { "radiance+y", "radiance-y" }) {
         const glm::vec4 v = voxel(channel, 3, 0, 3, 1);
         QVERIFY2(std::abs(v.a - 1.0f) < 1e-3f && std::abs(v.r - 1.0f) < 2e-3f,
             qPrintable(QString("%1: a %2 r %3").arg(channel).arg(v.a).arg(v.r)));
     }
-    for (const char* channel : {"radiance+x", "radiance-z"})
+    for (const char* channel : { "radiance+x", "radiance-z" })
         QVERIFY(std::abs(voxel(channel, 3, 0, 3, 1).a - 0.5f) < 1e-3f);
     // A level further up, the floor is one layer of four: upward cones still see it whole.
     QVERIFY(std::abs(voxel("radiance+y", 1, 0, 1, 2).a - 1.0f) < 1e-3f);
@@ -199,7 +216,8 @@ void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
     int size0 = 0;
     const std::vector<float> level0 = m_gl.renderer->readVoxels("radiance", 0, size0);
     QCOMPARE(size0, 16);
-    const char* const channels[6] = {"radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z"};
+    const char* const channels[6]
+        = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
     for (int tile = 0; tile < 6; ++tile) {
         const int axis = tile / 2;
         const bool positive = tile % 2 == 0; // travelling towards +axis: the lower child is in front
@@ -221,7 +239,8 @@ void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
                             glm::ivec3 lower = glm::ivec3(x, y, z) * 2 + lateral;
                             glm::ivec3 upper = lower;
                             upper[axis] += 1;
-                            const glm::ivec3 front = positive ? lower : upper, back = positive ? upper : lower;
+                            const glm::ivec3 front = positive ? lower : upper,
+                                             back = positive ? upper : lower;
                             const double frontAlpha = at(front, 3);
                             for (int c = 0; c < 4; ++c)
                                 expected[((std::size_t(z) * size + y) * size + x) * 4 + c]
@@ -232,8 +251,10 @@ void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
             QCOMPARE(gpuSize, size);
             double worst = 0.0;
             for (std::size_t k = 0; k < expected.size(); ++k)
-                worst = std::max(worst, std::abs(double(gpu[k]) - expected[k]) - 2e-3 * level * std::abs(expected[k]));
-            QVERIFY2(worst <= 1e-5, qPrintable(QString("%1 level %2 off by %3").arg(channels[tile]).arg(level).arg(worst)));
+                worst = std::max(
+                    worst, std::abs(double(gpu[k]) - expected[k]) - 2e-3 * level * std::abs(expected[k]));
+            QVERIFY2(worst <= 1e-5,
+                qPrintable(QString("%1 level %2 off by %3").arg(channels[tile]).arg(level).arg(worst)));
             previous = expected;
             previousSize = size;
         }

@@ -54,7 +54,8 @@ void RenderPlanTest::initTestCase()
     m_gl = test::GlTestContext::create();
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
     QString error;
-    QVERIFY2(doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error), qPrintable(error));
+    QVERIFY2(
+        doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error), qPrintable(error));
     // The short box moves (dynamic) and gets its own material so material edits can target one layer.
     for (std::size_t i = 0; i < m_scene.meshes.size(); ++i)
         if (m_scene.meshes[i].name.rfind("shortbox", 0) == 0) {
@@ -92,7 +93,8 @@ void RenderPlanTest::expectSameAsForced(const char* what)
     m_gl.renderer->invalidate();
     const render::FrameStats forced = m_gl.renderer->renderFrame(m_camera, 40, 40);
     for (const render::PassStats& p : forced.passes)
-        QVERIFY2(p.action != "reused", qPrintable(QString("%1: forced frame reused %2").arg(what, p.name.c_str())));
+        QVERIFY2(p.action != "reused",
+            qPrintable(QString("%1: forced frame reused %2").arg(what, p.name.c_str())));
     const render::RadianceImage reference = m_gl.renderer->readFrame();
     double worst = 0.0;
     for (std::size_t i = 0; i < reference.pixels.size(); ++i)
@@ -100,7 +102,8 @@ void RenderPlanTest::expectSameAsForced(const char* what)
             const double a = m_plannedImage.pixels[i][c], b = reference.pixels[i][c];
             worst = std::max(worst, std::abs(a - b) / (1.0 + std::abs(b)));
         }
-    QVERIFY2(worst <= 1e-4, qPrintable(QString("%1: planned frame differs from forced by %2").arg(what).arg(worst)));
+    QVERIFY2(worst <= 1e-4,
+        qPrintable(QString("%1: planned frame differs from forced by %2").arg(what).arg(worst)));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 
@@ -115,17 +118,19 @@ const render::PassStats& RenderPlanTest::pass(const std::string& name) const
 void RenderPlanTest::expectAction(const std::string& name, const std::string& action)
 {
     const render::PassStats& p = pass(name);
-    QVERIFY2(p.action == action, qPrintable(QString("%1: %2 (%3), expected %4").arg(name.c_str(), p.action.c_str(),
-                                                p.reason.c_str(), action.c_str())));
+    QVERIFY2(p.action == action,
+        qPrintable(QString("%1: %2 (%3), expected %4")
+                       .arg(name.c_str(), p.action.c_str(), p.reason.c_str(), action.c_str())));
 }
 
 void RenderPlanTest::cameraOnlyReusesEverythingButPerPixelWork()
 {
-    m_camera.position = glm::vec3(glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
+    m_camera.position = glm::vec3(
+        glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
     planned();
-    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "reused");
-    for (const char* name : {"g-buffer", "cone trace", "composite"})
+    for (const char* name : { "g-buffer", "cone trace", "composite" })
         expectAction(name, "run");
     expectSameAsForced("camera orbit");
 }
@@ -155,7 +160,8 @@ void RenderPlanTest::brighterLightKeepsShadowMaps()
 
 void RenderPlanTest::movedDynamicObjectRedoesOnlyItsLayer()
 {
-    m_gl.renderer->setMeshTransform(std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), glm::vec3(-0.2f, 0.0f, 0.1f)));
+    m_gl.renderer->setMeshTransform(
+        std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), glm::vec3(-0.2f, 0.0f, 0.1f)));
     planned();
     expectAction("voxelize", "run");
     QVERIFY(pass("voxelize").reason.find("dynamic") != std::string::npos);
@@ -175,7 +181,8 @@ void RenderPlanTest::editedMaterialRedoesOnlyLayersUsingIt()
     QVERIFY(pass("inject light").reason.find("re-injecting only") != std::string::npos);
     expectSameAsForced("static material edit");
 
-    render::Material box = m_scene.materials[std::size_t(m_scene.meshes[std::size_t(m_dynamicMesh)].material)];
+    render::Material box
+        = m_scene.materials[std::size_t(m_scene.meshes[std::size_t(m_dynamicMesh)].material)];
     box.albedo = glm::vec3(0.2f, 0.6f, 0.2f);
     m_gl.renderer->setMaterial(std::size_t(m_scene.meshes[std::size_t(m_dynamicMesh)].material), box);
     planned();
@@ -209,7 +216,7 @@ void RenderPlanTest::glossyMaterialAddsSpecularCones()
             m_gl.renderer->setMaterial(m, matte);
         }
     planned();
-    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "reused");
     QVERIFY(pass("cone trace").reason.find("no specular cones") != std::string::npos);
     expectSameAsForced("glossy material made matte");
@@ -221,7 +228,7 @@ void RenderPlanTest::voxelSettingsRebuildEverything()
     settings.voxelResolution = 16;
     m_gl.renderer->setSettings(settings);
     planned();
-    for (const char* name : {"shadow maps", "voxelize", "inject light", "mipmaps"})
+    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "run");
     expectSameAsForced("grid resolution");
 }
@@ -264,7 +271,7 @@ void RenderPlanTest::secondBounceFollowsTheFirst()
     expectAction("bounces", "skipped");
     const std::size_t oneBounceBytes = m_gl.renderer->voxelBytes();
 
-    for (const int bounces : {2, render::RenderSettings::kConvergedBounces}) {
+    for (const int bounces : { 2, render::RenderSettings::kConvergedBounces }) {
         settings.bounces = bounces;
         m_gl.renderer->setSettings(settings);
         planned();
@@ -332,8 +339,10 @@ void RenderPlanTest::bouncesConvergeAcrossFrames()
     const render::RadianceImage fromScratch = m_gl.renderer->readFrame();
     const double againstScratch = io::ImageMetrics::relativeMse(converged, fromScratch);
     const double firstFrame = io::ImageMetrics::relativeMse(firstAfterEdit, fromScratch);
-    qInfo("converged over %d frames; after a 20%% light edit: first frame %.2e, converged %.2e relative MSE from "
-          "a frame that iterated from scratch", frames, firstFrame, againstScratch);
+    qInfo("converged over %d frames; after a 20%% light edit: first frame %.2e, converged %.2e relative MSE "
+          "from "
+          "a frame that iterated from scratch",
+        frames, firstFrame, againstScratch);
     QVERIFY2(againstScratch < 1e-3, qPrintable(QString::number(againstScratch)));
     QVERIFY2(firstFrame < 0.02, qPrintable(QString::number(firstFrame)));
 }
@@ -355,7 +364,7 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
     const std::size_t uncachedBytes = m_gl.renderer->voxelBytes();
     const render::RadianceImage perPixel = m_plannedImage;
 
-    for (const int cell : {1, 2}) {
+    for (const int cell : { 1, 2 }) {
         settings.irradianceCache = true;
         settings.irradianceCellSize = cell;
         m_gl.renderer->setSettings(settings);
@@ -364,7 +373,8 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
         expectAction("inject light", "reused");
         QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
         const double difference = io::ImageMetrics::relativeMse(m_plannedImage, perPixel);
-        qInfo("irradiance cache, %d^3-voxel cells: relative MSE %.2e against per-pixel cones", cell, difference);
+        qInfo("irradiance cache, %d^3-voxel cells: relative MSE %.2e against per-pixel cones", cell,
+            difference);
         // Measured 2e-3 to 2e-2 on the atrium and the Cornell box (docs/BENCHMARKS.md); a lookup that picked
         // the wrong cells (a wall's far side, another face) would show as large errors at the edges.
         QVERIFY2(difference < 0.05, qPrintable(QString::number(difference)));
@@ -382,13 +392,15 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
     m_camera.position += glm::vec3(0.05f, 0.0f, 0.0f);
     planned();
     expectAction("irradiance cache", "run");
-    QVERIFY2(pass("irradiance cache").reason.find("came into view") != std::string::npos, pass("irradiance cache").reason.c_str());
+    QVERIFY2(pass("irradiance cache").reason.find("came into view") != std::string::npos,
+        pass("irradiance cache").reason.c_str());
     expectSameAsForced("camera move with the irradiance cache");
     planned();
     planned();
     expectAction("irradiance cache", "reused");
-    for (const float turn : {0.3f, -0.6f}) {
-        m_camera.position = glm::vec3(glm::rotate(glm::mat4(1.0f), turn, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
+    for (const float turn : { 0.3f, -0.6f }) {
+        m_camera.position = glm::vec3(
+            glm::rotate(glm::mat4(1.0f), turn, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
         planned();
         expectAction("irradiance cache", "run");
     }

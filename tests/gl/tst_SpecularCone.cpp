@@ -1,7 +1,6 @@
 #include "GlTestContext.h"
 #include "TestSupport.h"
 
-
 #include <QtTest>
 
 using namespace vct;
@@ -19,9 +18,11 @@ render::Scene floorAndLight(bool glossy)
     render::Material emitter;
     emitter.albedo = glm::vec3(0.0f);
     emitter.emission = glm::vec3(5.0f);
-    scene.materials = {floor, emitter};
-    scene.meshes.push_back(test::makeTriangles(test::quad({1, 0.5f, 15}, {15, 0.5f, 15}, {15, 0.5f, 1}, {1, 0.5f, 1}), 0));
-    scene.meshes.push_back(test::makeTriangles(test::quad({4, 1, 2}, {12, 1, 2}, {12, 8, 2}, {4, 8, 2}), 1));
+    scene.materials = { floor, emitter };
+    scene.meshes.push_back(test::makeTriangles(
+        test::quad({ 1, 0.5f, 15 }, { 15, 0.5f, 15 }, { 15, 0.5f, 1 }, { 1, 0.5f, 1 }), 0));
+    scene.meshes.push_back(
+        test::makeTriangles(test::quad({ 4, 1, 2 }, { 12, 1, 2 }, { 12, 8, 2 }, { 4, 8, 2 }), 1));
     return scene;
 }
 
@@ -41,7 +42,7 @@ private slots:
 private:
     render::RadianceImage renderSpecular(bool glossy, int divisor = 8, int size = kSize);
     test::GlTestContext m_gl;
-    const render::Camera m_camera{{8.0f, 4.0f, 14.0f}, {8.0f, 0.5f, 6.0f}, {0, 1, 0}, 70.0f, 0.01f};
+    const render::Camera m_camera { { 8.0f, 4.0f, 14.0f }, { 8.0f, 0.5f, 6.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
     static constexpr int kSize = 48;
 };
 
@@ -73,9 +74,9 @@ void SpecularConeTest::glossyFloorMirrorsEmitter()
     const render::RadianceImage image = renderSpecular(true);
     // The mirror ray from (8, 0.5, 6) meets the wall at (8, 2.25, 2): it sees the light. From (13, 0.5, 7)
     // it meets the wall's plane at x = 16.6, well beside the light (x in [4, 12]), and sees nothing.
-    const glm::ivec2 hit = test::pixelOf(m_camera, {8.0f, 0.5f, 6.0f}, kSize);
-    const glm::ivec2 miss = test::pixelOf(m_camera, {13.0f, 0.5f, 7.0f}, kSize);
-    for (const glm::ivec2& p : {hit, miss})
+    const glm::ivec2 hit = test::pixelOf(m_camera, { 8.0f, 0.5f, 6.0f }, kSize);
+    const glm::ivec2 miss = test::pixelOf(m_camera, { 13.0f, 0.5f, 7.0f }, kSize);
+    for (const glm::ivec2& p : { hit, miss })
         QVERIFY(p.x >= 0 && p.y >= 0 && p.x < kSize && p.y < kSize);
     const float lit = image.at(hit.x, hit.y).r, dark = image.at(miss.x, miss.y).r;
     qInfo("specular term where the mirror sees the light %.3f, where it does not %.3f", lit, dark);
@@ -107,7 +108,7 @@ void SpecularConeTest::reducedResolutionStaysCloseToFull()
         fullSum += p.r;
     }
     QVERIFY(brightest > 0.5f);
-    for (const int divisor : {2, 4, 8}) {
+    for (const int divisor : { 2, 4, 8 }) {
         const render::RadianceImage reduced = renderSpecular(true, divisor, kLarge);
         double reducedSum = 0.0, absoluteError = 0.0;
         std::size_t far = 0;
@@ -119,7 +120,8 @@ void SpecularConeTest::reducedResolutionStaysCloseToFull()
         }
         const double meanRatio = reducedSum / fullSum, meanError = absoluteError / fullSum;
         const double farShare = double(far) / double(full.pixels.size());
-        qInfo("specular at 1/%d resolution: mean %.3f of every pixel traced, mean error %.3f of the mean, %.2f%% of "
+        qInfo("specular at 1/%d resolution: mean %.3f of every pixel traced, mean error %.3f of the mean, "
+              "%.2f%% of "
               "pixels off by more than a quarter of the brightest reflection",
             divisor, meanRatio, meanError, 100.0 * farShare);
         QVERIFY2(std::abs(meanRatio - 1.0) < 0.08, qPrintable(QString::number(meanRatio)));
@@ -129,10 +131,10 @@ void SpecularConeTest::reducedResolutionStaysCloseToFull()
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 
-// With direct light on, the emitter is an area light: its reflection on the glossy floor comes with the direct
-// term, and where the mirror ray meets the light it is close to Ks * Ke * cos(theta) (the lobe lies inside the
-// light), while beside the light it is dark. The specular cone no longer sees the emitter, so it is not
-// counted twice.
+// With direct light on, the emitter is an area light: its reflection on the glossy floor comes with the
+// direct term, and where the mirror ray meets the light it is close to Ks * Ke * cos(theta) (the lobe lies
+// inside the light), while beside the light it is dark. The specular cone no longer sees the emitter, so it
+// is not counted twice.
 void SpecularConeTest::glossyFloorReflectsAreaLight()
 {
     const render::Scene scene = floorAndLight(true);
@@ -141,9 +143,9 @@ void SpecularConeTest::glossyFloorReflectsAreaLight()
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
     m_gl.renderer->setGridBounds(test::box(glm::vec3(0.5f), glm::vec3(15.5f)));
-    const glm::ivec2 hit = test::pixelOf(m_camera, {8.0f, 0.5f, 6.0f}, kSize);
-    const glm::ivec2 miss = test::pixelOf(m_camera, {13.0f, 0.5f, 7.0f}, kSize);
-    for (const render::DebugView view : {render::DebugView::Direct, render::DebugView::IndirectSpecular}) {
+    const glm::ivec2 hit = test::pixelOf(m_camera, { 8.0f, 0.5f, 6.0f }, kSize);
+    const glm::ivec2 miss = test::pixelOf(m_camera, { 13.0f, 0.5f, 7.0f }, kSize);
+    for (const render::DebugView view : { render::DebugView::Direct, render::DebugView::IndirectSpecular }) {
         settings.view = view;
         m_gl.renderer->setSettings(settings);
         m_gl.renderer->renderFrame(m_camera, kSize, kSize);
@@ -154,7 +156,8 @@ void SpecularConeTest::glossyFloorReflectsAreaLight()
         if (view == render::DebugView::Direct) {
             // The mirror direction from (8, 0.5, 6) to (8, 2.25, 2): cos(theta) = 1.75 / |(0, 1.75, -4)|.
             const float expected = 0.5f * 5.0f * 1.75f / std::sqrt(1.75f * 1.75f + 16.0f);
-            QVERIFY2(std::abs(lit - expected) <= 0.1f * expected, qPrintable(QString("%1, expected %2").arg(lit).arg(expected)));
+            QVERIFY2(std::abs(lit - expected) <= 0.1f * expected,
+                qPrintable(QString("%1, expected %2").arg(lit).arg(expected)));
             QVERIFY2(dark < 0.1f * lit, qPrintable(QString::number(dark)));
         } else {
             QVERIFY2(lit < 0.05f, qPrintable(QString::number(lit))); // not seen a second time

@@ -50,8 +50,8 @@ void VoxelInspectorTest::levelZeroListsEveryNonEmptyVoxel()
     for (std::size_t i = 3; i < albedo.size(); i += 4)
         nonEmpty += albedo[i] > 0.0f ? 1 : 0;
     QVERIFY(nonEmpty > 0);
-    for (render::VoxelChannel channel : {render::VoxelChannel::Albedo, render::VoxelChannel::Radiance,
-             render::VoxelChannel::Opacity, render::VoxelChannel::Normal, render::VoxelChannel::Emission})
+    for (render::VoxelChannel channel : { render::VoxelChannel::Albedo, render::VoxelChannel::Radiance,
+             render::VoxelChannel::Opacity, render::VoxelChannel::Normal, render::VoxelChannel::Emission })
         QCOMPARE(m_gl.renderer->listVoxels(0, channel).samples.size(), nonEmpty);
     // Each listed voxel really is occupied, and its albedo is what the volume holds.
     for (const render::VoxelSample& s : m_gl.renderer->listVoxels(0, render::VoxelChannel::Albedo).samples) {
@@ -67,17 +67,20 @@ void VoxelInspectorTest::coarserLevelsNeverListMore()
     const int levels = m_gl.renderer->voxelLevelCount();
     QCOMPARE(levels, 6); // 32 -> 1
     for (int level = 0; level < levels; ++level) {
-        const std::size_t radiance = m_gl.renderer->listVoxels(level, render::VoxelChannel::Radiance).samples.size();
-        const std::size_t albedo = m_gl.renderer->listVoxels(level, render::VoxelChannel::Albedo).samples.size();
-        QVERIFY2(radiance <= previous, qPrintable(QString("level %1: %2 after %3").arg(level).arg(radiance).arg(previous)));
+        const std::size_t radiance
+            = m_gl.renderer->listVoxels(level, render::VoxelChannel::Radiance).samples.size();
+        const std::size_t albedo
+            = m_gl.renderer->listVoxels(level, render::VoxelChannel::Albedo).samples.size();
+        QVERIFY2(radiance <= previous,
+            qPrintable(QString("level %1: %2 after %3").arg(level).arg(radiance).arg(previous)));
         QCOMPARE(albedo, radiance); // both channels list the cells any surface touches
         previous = radiance;
     }
     QCOMPARE(previous, std::size_t(1)); // the coarsest level is one cell
 }
 
-// With anisotropic mips (the default) cones never read the box-filtered levels, so they are filtered only when
-// inspected: they must still show the voxels' current light, not the light they were last filtered for.
+// With anisotropic mips (the default) cones never read the box-filtered levels, so they are filtered only
+// when inspected: they must still show the voxels' current light, not the light they were last filtered for.
 void VoxelInspectorTest::coarseRadianceFollowsTheLight()
 {
     const auto levelSum = [this](int level) {
@@ -111,9 +114,10 @@ void VoxelInspectorTest::cubesAreDrawnIntoTheGivenRectangle()
     target.attachColor(0, color);
     target.attachDepth(depth);
     target.finish(1);
-    const float black[4] = {0, 0, 0, 1};
+    const float black[4] = { 0, 0, 0, 1 };
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
-    const std::size_t drawn = m_gl.renderer->drawVoxelCubes(m_camera, 1, render::VoxelChannel::Albedo, target.id(), 32, 0, 32, 32, 1.0f);
+    const std::size_t drawn = m_gl.renderer->drawVoxelCubes(
+        m_camera, 1, render::VoxelChannel::Albedo, target.id(), 32, 0, 32, 32, 1.0f);
     QCOMPARE(drawn, m_gl.renderer->listVoxels(1, render::VoxelChannel::Albedo).samples.size());
     std::vector<unsigned char> pixels(64 * 32 * 4);
     glGetTextureImage(color.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
@@ -126,8 +130,8 @@ void VoxelInspectorTest::cubesAreDrawnIntoTheGivenRectangle()
             else
                 rightLit += p[0] > 60 || p[1] > 60 || p[2] > 60;
         }
-    QCOMPARE(leftTouched, 0);  // nothing drawn outside the rectangle
-    QVERIFY(rightLit > 100);   // the box's walls fill much of the view
+    QCOMPARE(leftTouched, 0); // nothing drawn outside the rectangle
+    QVERIFY(rightLit > 100); // the box's walls fill much of the view
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 

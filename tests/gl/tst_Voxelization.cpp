@@ -20,12 +20,12 @@ bool triangleOverlapsBox(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 center
     a -= center;
     b -= center;
     c -= center;
-    const glm::vec3 e[3] = {b - a, c - b, a - c};
-    const glm::vec3 axesUnit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const glm::vec3 e[3] = { b - a, c - b, a - c };
+    const glm::vec3 axesUnit[3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
     auto separated = [&](const glm::vec3& axis) {
         const float pa = glm::dot(a, axis), pb = glm::dot(b, axis), pc = glm::dot(c, axis);
         const float r = half * (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
-        return std::min({pa, pb, pc}) > r || std::max({pa, pb, pc}) < -r;
+        return std::min({ pa, pb, pc }) > r || std::max({ pa, pb, pc }) < -r;
     };
     for (const glm::vec3& u : axesUnit)
         for (const glm::vec3& edge : e)
@@ -46,7 +46,7 @@ std::set<Voxel> occupiedVoxels(render::Renderer& renderer)
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x)
                 if (albedo[((std::size_t(z) * size + y) * size + x) * 4 + 3] > 0.5f)
-                    voxels.insert({x, y, z});
+                    voxels.insert({ x, y, z });
     return voxels;
 }
 
@@ -61,7 +61,7 @@ std::set<Voxel> expectedConservative(const render::Renderer& renderer, glm::vec3
                 const glm::vec3 center = renderer.gridOrigin() + (glm::vec3(x, y, z) + 0.5f) * v;
                 // A hair inside the box so touching at a face or edge does not count.
                 if (triangleOverlapsBox(a, b, c, center, 0.5f * v * 0.999f))
-                    voxels.insert({x, y, z});
+                    voxels.insert({ x, y, z });
             }
     return voxels;
 }
@@ -89,7 +89,8 @@ private slots:
     void noGlErrors();
 
 private:
-    void voxelize(const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo = glm::vec3(0.5f));
+    void voxelize(
+        const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo = glm::vec3(0.5f));
     test::GlTestContext m_gl;
 };
 
@@ -114,7 +115,7 @@ void VoxelizationTest::voxelize(const std::vector<glm::vec3>& triangles, bool co
     m_gl.renderer->setScene(scene);
     m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
     // fit() adds one cell on each side: the 16^3 grid spans exactly [0, 16]^3.
-    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
     QVERIFY(std::abs(m_gl.renderer->voxelSize() - 1.0f) < 1e-5f);
     QVERIFY(glm::length(m_gl.renderer->gridOrigin()) < 1e-5f);
 }
@@ -133,7 +134,7 @@ void VoxelizationTest::knownTriangleGivesExactlyItsVoxels()
     // ways. Plain rasterisation keeps voxels whose column centre lies inside; conservative keeps every voxel
     // the triangle touches.
     const glm::vec3 a(2.2f, 3.2f, 5.3f), b(9.7f, 3.2f, 5.3f), c(2.2f, 10.7f, 5.3f);
-    voxelize({a, b, c}, conservative);
+    voxelize({ a, b, c }, conservative);
     const std::set<Voxel> actual = occupiedVoxels(*m_gl.renderer);
     std::set<Voxel> expected;
     if (conservative) {
@@ -143,7 +144,7 @@ void VoxelizationTest::knownTriangleGivesExactlyItsVoxels()
             for (int x = 0; x < 16; ++x) {
                 const float px = x + 0.5f, py = y + 0.5f;
                 if (px > a.x && py > a.y && (px - a.x) + (py - a.y) < (b.x - a.x))
-                    expected.insert({x, y, 5});
+                    expected.insert({ x, y, 5 });
             }
     }
     QVERIFY(!expected.empty());
@@ -154,7 +155,7 @@ void VoxelizationTest::knownTriangleGivesExactlyItsVoxels()
 void VoxelizationTest::tiltedTriangleIsCoveredConservatively()
 {
     const glm::vec3 a(2.3f, 2.6f, 3.1f), b(12.4f, 5.2f, 9.7f), c(4.9f, 13.1f, 6.2f);
-    voxelize({a, b, c}, true);
+    voxelize({ a, b, c }, true);
     const std::set<Voxel> actual = occupiedVoxels(*m_gl.renderer);
     const std::set<Voxel> expected = expectedConservative(*m_gl.renderer, a, b, c);
     std::set<Voxel> missing;
@@ -170,28 +171,31 @@ void VoxelizationTest::tiltedTriangleIsCoveredConservatively()
 void VoxelizationTest::subVoxelSliverNeedsConservativeVoxelization()
 {
     // 0.1 voxel wide, between pixel centres: no column centre lies inside it.
-    const std::vector<glm::vec3> sliver = {{2.1f, 6.55f, 4.5f}, {13.9f, 6.6f, 4.5f}, {2.1f, 6.65f, 4.5f}};
+    const std::vector<glm::vec3> sliver
+        = { { 2.1f, 6.55f, 4.5f }, { 13.9f, 6.6f, 4.5f }, { 2.1f, 6.65f, 4.5f } };
     voxelize(sliver, false);
     QCOMPARE(occupiedVoxels(*m_gl.renderer).size(), std::size_t(0));
     voxelize(sliver, true);
     const std::set<Voxel> kept = occupiedVoxels(*m_gl.renderer);
     const std::set<Voxel> expected = expectedConservative(*m_gl.renderer, sliver[0], sliver[1], sliver[2]);
     QVERIFY(!expected.empty());
-    QVERIFY2(kept == expected, qPrintable(QString("kept %1\nexpected %2").arg(describe(kept), describe(expected))));
+    QVERIFY2(kept == expected,
+        qPrintable(QString("kept %1\nexpected %2").arg(describe(kept), describe(expected))));
 }
 
 void VoxelizationTest::overlappingSurfacesAverage()
 {
     // Two coplanar quads with different albedos over the same voxels: the voxel holds the mean. Only the blue
-    // one emits; it is voxelized by the emissive shader variant, the red one by the plain one, and the voxel's
-    // emission is still the mean over both.
+    // one emits; it is voxelized by the emissive shader variant, the red one by the plain one, and the
+    // voxel's emission is still the mean over both.
     render::Scene scene;
     render::Material red, blue;
     red.albedo = glm::vec3(0.8f, 0.0f, 0.0f);
     blue.albedo = glm::vec3(0.0f, 0.0f, 0.4f);
     blue.emission = glm::vec3(3.0f, 2.0f, 1.0f);
-    scene.materials = {red, blue};
-    const auto q = test::quad({4.2f, 4.2f, 7.5f}, {8.8f, 4.2f, 7.5f}, {8.8f, 8.8f, 7.5f}, {4.2f, 8.8f, 7.5f});
+    scene.materials = { red, blue };
+    const auto q
+        = test::quad({ 4.2f, 4.2f, 7.5f }, { 8.8f, 4.2f, 7.5f }, { 8.8f, 8.8f, 7.5f }, { 4.2f, 8.8f, 7.5f });
     scene.meshes.push_back(test::makeTriangles(q, 0));
     scene.meshes.push_back(test::makeTriangles(q, 1));
     render::RenderSettings settings;
@@ -199,7 +203,7 @@ void VoxelizationTest::overlappingSurfacesAverage()
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(scene);
     m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
-    m_gl.renderer->renderFrame(render::Camera{}, 8, 8);
+    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
     int size = 0;
     const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
     const std::size_t i = ((std::size_t(7) * size + 6) * size + 6) * 4; // an interior voxel of the quads

@@ -311,7 +311,8 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetHigh"), Qt::LeftButton);
     const render::RenderSettings& s = document->state().settings;
-    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with finer cells for the bounce gather.
+    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with finer cells for the bounce
+    // gather.
     QCOMPARE(s.voxelResolution, 128);
     QCOMPARE(s.diffuseConeCount, 5);
     QCOMPARE(s.diffuseApertureDeg, 30.0f);
@@ -322,7 +323,8 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     QCOMPARE(document->undoStack()->count(), 1);
     QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());
     QVERIFY(!child<QPushButton>(&dock, "presetBalanced")->isChecked());
-    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(), render::RenderSettings::kConvergedBounces);
+    QCOMPARE(child<QComboBox>(&dock, "bouncesCombo")->currentData().toInt(),
+        render::RenderSettings::kConvergedBounces);
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetFast"), Qt::LeftButton);
     QCOMPARE(document->state().settings.voxelResolution, 64);

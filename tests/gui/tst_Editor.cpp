@@ -16,8 +16,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QCheckBox>
-#include <QDockWidget>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
@@ -138,13 +138,15 @@ void EditorTest::emissiveFlagBrightensAndUndoRestores()
     document->undoStack()->undo();
     QVERIFY(!emissive->isChecked());
     const double restored = meanRadiance();
-    QVERIFY2(std::abs(restored - before) <= 1e-3 * (1.0 + before), qPrintable(QString("%1 vs %2").arg(restored).arg(before)));
+    QVERIFY2(std::abs(restored - before) <= 1e-3 * (1.0 + before),
+        qPrintable(QString("%1 vs %2").arg(restored).arg(before)));
 }
 
 void EditorTest::inspectorCountsMatchTheVoxels()
 {
     ui::VoxelInspectorDock* inspector = m_window->inspectorDock();
-    QComboBox* resolution = m_window->renderSettingsDock()->findChild<QComboBox*>(QStringLiteral("voxelResolutionCombo"));
+    QComboBox* resolution
+        = m_window->renderSettingsDock()->findChild<QComboBox*>(QStringLiteral("voxelResolutionCombo"));
     QVERIFY(resolution);
     const int index = resolution->findText(QStringLiteral("64"), Qt::MatchStartsWith);
     QVERIFY(index >= 0);
@@ -164,7 +166,8 @@ void EditorTest::inspectorCountsMatchTheVoxels()
         inspector->levelSlider()->setValue(level);
         QVERIFY(waitForFrame());
         const std::size_t count = m_window->viewport()->lastCubeCount();
-        QVERIFY2(count <= previous, qPrintable(QString("level %1: %2 after %3").arg(level).arg(count).arg(previous)));
+        QVERIFY2(count <= previous,
+            qPrintable(QString("level %1: %2 after %3").arg(level).arg(count).arg(previous)));
         QVERIFY(count > 0);
         previous = count;
     }
@@ -181,16 +184,19 @@ void EditorTest::clickSelectsTheObjectUnderTheCursor()
             shortBox = int(i);
     QVERIFY(shortBox >= 0);
     // Project the short box's centre with the viewport's camera and click there.
-    const render::Scene& source = document->sourceScene(document->state().nodes[std::size_t(shortBox)].source);
+    const render::Scene& source
+        = document->sourceScene(document->state().nodes[std::size_t(shortBox)].source);
     render::Aabb box;
     const glm::mat4 world = document->nodeWorldTransform(shortBox);
-    for (const glm::vec3& p : source.meshes[std::size_t(document->state().nodes[std::size_t(shortBox)].mesh)].positions)
+    for (const glm::vec3& p :
+        source.meshes[std::size_t(document->state().nodes[std::size_t(shortBox)].mesh)].positions)
         box.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
     const render::Camera& camera = document->state().camera;
     const glm::mat4 view = glm::lookAt(camera.position, camera.lookAt, camera.up);
-    const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg),
-        float(viewport->width()) / float(viewport->height()), 0.01f, 100.0f);
-    const glm::vec3 p = glm::project(box.center(), view, projection, glm::vec4(0, 0, viewport->width(), viewport->height()));
+    const glm::mat4 projection = glm::perspective(
+        glm::radians(camera.fovYDeg), float(viewport->width()) / float(viewport->height()), 0.01f, 100.0f);
+    const glm::vec3 p = glm::project(
+        box.center(), view, projection, glm::vec4(0, 0, viewport->width(), viewport->height()));
     const QPoint click(int(p.x), viewport->height() - 1 - int(p.y));
     document->setSelectedNode(-1);
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, click);
@@ -211,8 +217,9 @@ void EditorTest::ctrlDragMovesTheSelectionInOneUndoStep()
     QTest::keyPress(viewport, Qt::Key_Y);
     QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, start);
     for (int i = 1; i <= 5; ++i) {
-        QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(3 * i, -4 * i)), viewport->mapToGlobal(QPointF(start + QPoint(3 * i, -4 * i))),
-            Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+        QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(3 * i, -4 * i)),
+            viewport->mapToGlobal(QPointF(start + QPoint(3 * i, -4 * i))), Qt::NoButton, Qt::LeftButton,
+            Qt::ControlModifier);
         QCoreApplication::sendEvent(viewport, &move);
     }
     QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, start + QPoint(15, -20));
@@ -276,7 +283,8 @@ void EditorTest::inspectorScreenshot()
 {
     ui::VoxelInspectorDock* inspector = m_window->inspectorDock();
     inspector->enabledBox()->setChecked(true);
-    inspector->channelBox()->setCurrentIndex(inspector->channelBox()->findData(int(render::VoxelChannel::Radiance)));
+    inspector->channelBox()->setCurrentIndex(
+        inspector->channelBox()->findData(int(render::VoxelChannel::Radiance)));
     inspector->levelSlider()->setValue(2);
     QVERIFY(waitForFrame());
     QVERIFY(m_window->viewport()->lastCubeCount() > 0);
@@ -340,13 +348,16 @@ void EditorTest::recoveredWorkIsUntitledAndSurvivesUntilSaved()
         ui::MainWindow recovered;
         QVERIFY(recovered.recoverAutosave());
         doc::Document* document = recovered.document();
-        QVERIFY2(document->filePath().isEmpty(), qPrintable("recovered document is titled " + document->filePath()));
+        QVERIFY2(document->filePath().isEmpty(),
+            qPrintable("recovered document is titled " + document->filePath()));
         QVERIFY2(document->isModified(), "a recovered document must count as unsaved");
         QVERIFY(recovered.isWindowModified());
-        QVERIFY2(!recovered.windowTitle().contains(QStringLiteral("recovery")), qPrintable(recovered.windowTitle()));
+        QVERIFY2(!recovered.windowTitle().contains(QStringLiteral("recovery")),
+            qPrintable(recovered.windowTitle()));
         QCOMPARE(document->state().materials[0].albedo, edited.albedo);
         // Still there after recovering: a second crash before saving must not lose the work.
-        QVERIFY2(QFileInfo::exists(recovery), "recovery removed the only copy of the work before it was saved");
+        QVERIFY2(
+            QFileInfo::exists(recovery), "recovery removed the only copy of the work before it was saved");
     }
     const QString saved = test::outputDir() + QStringLiteral("/recovered.vctproj");
     QFile::remove(saved);
@@ -379,7 +390,8 @@ void EditorTest::nonFiniteOverlayReportsEveryTarget()
     QVERIFY(waitForFrame());
     QTRY_VERIFY(overlay->isVisible());
     // Every 2D target plus at least one voxel level per volume.
-    QVERIFY2(overlay->checkedResources() >= 5 + m_window->viewport()->voxelLevelCount(), qPrintable(overlay->text()));
+    QVERIFY2(overlay->checkedResources() >= 5 + m_window->viewport()->voxelLevelCount(),
+        qPrintable(overlay->text()));
     QCOMPARE(overlay->total(), std::uint64_t(0));
     QVERIFY2(overlay->text().contains(QStringLiteral("none in")), qPrintable(overlay->text()));
     action->setChecked(false);

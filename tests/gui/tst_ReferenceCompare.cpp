@@ -131,12 +131,13 @@ void ReferenceCompareTest::compareRunsToTheTarget()
 
     const QSize size = expectedSize();
     QCOMPARE(std::max(size.width(), size.height()), 48);
-    for (const render::RadianceImage* image : {&dock()->vctImage(), &dock()->referenceImage(), &dock()->heatmapImage()}) {
+    for (const render::RadianceImage* image :
+        { &dock()->vctImage(), &dock()->referenceImage(), &dock()->heatmapImage() }) {
         QCOMPARE(image->width, size.width());
         QCOMPARE(image->height, size.height());
         QCOMPARE(int(image->pixels.size()), size.width() * size.height());
     }
-    for (const ui::ImagePane* pane : {dock()->vctPane(), dock()->referencePane(), dock()->heatmapPane()}) {
+    for (const ui::ImagePane* pane : { dock()->vctPane(), dock()->referencePane(), dock()->heatmapPane() }) {
         QVERIFY(!pane->image().isNull());
         QCOMPARE(pane->image().size(), size);
     }
@@ -155,7 +156,8 @@ void ReferenceCompareTest::compareRunsToTheTarget()
     QCOMPARE(dock()->progressBar()->maximum(), 16);
     QCOMPARE(dock()->progressBar()->value(), dock()->progressBar()->maximum());
     QVERIFY(!dock()->cancelButton()->isEnabled());
-    QVERIFY2(dock()->statusLabel()->text().startsWith(QStringLiteral("Done")), qPrintable(dock()->statusLabel()->text()));
+    QVERIFY2(dock()->statusLabel()->text().startsWith(QStringLiteral("Done")),
+        qPrintable(dock()->statusLabel()->text()));
     QVERIFY(!dock()->isStale());
 
     const QString screenshot = test::outputDir() + QStringLiteral("/reference-compare.png");
@@ -236,8 +238,8 @@ void ReferenceCompareTest::accuracyChartPlotsBothSeries()
     const QString path = test::outputDir() + QStringLiteral("/sweep-results.csv");
     QFile file(path);
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-    // As vct-bench accuracy writes it (path-tracer rows: wall_ms, no gpu_ms), plus an unknown column, a quoted
-    // label with a comma and one row a log chart cannot show.
+    // As vct-bench accuracy writes it (path-tracer rows: wall_ms, no gpu_ms), plus an unknown column, a
+    // quoted label with a comma and one row a log chart cannot show.
     file.write("kind,label,voxel_res,gpu_ms,rel_mse,ssim,wall_ms,extra\n"
                "vct,vct 64,64,3.5,0.04,0.91,5,x\n"
                "vct,\"vct 128, anisotropic\",128,12.25,0.02,0.95,20,x\n"

@@ -28,7 +28,8 @@ constexpr double kThinWallLeakBoundCached = 0.06;
 /// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md).
 constexpr double kThinWallLeakBoundConverged = 0.16;
 
-/** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by `offset`. */
+/** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by
+ * `offset`. */
 render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
 {
     render::Scene scene;
@@ -36,20 +37,22 @@ render::Scene room(float scale = 1.0f, glm::vec3 offset = glm::vec3(0.0f))
     wall.albedo = glm::vec3(0.7f);
     render::Material red;
     red.albedo = glm::vec3(0.7f, 0.1f, 0.1f);
-    scene.materials = {wall, red};
+    scene.materials = { wall, red };
     const auto p = [&](float x, float y, float z) { return glm::vec3(x, y, z) * scale + offset; };
     std::vector<glm::vec3> walls;
-    for (const auto& q : {test::quad(p(-1, -1, 1), p(1, -1, 1), p(1, -1, -1), p(-1, -1, -1)), // floor, facing up
-             test::quad(p(-1, 1, -1), p(1, 1, -1), p(1, 1, 1), p(-1, 1, 1)),                   // ceiling
-             test::quad(p(-1, -1, -1), p(1, -1, -1), p(1, 1, -1), p(-1, 1, -1)),               // back
-             test::quad(p(1, -1, 1), p(-1, -1, 1), p(-1, 1, 1), p(1, 1, 1)),                   // front
-             test::quad(p(-1, -1, 1), p(-1, -1, -1), p(-1, 1, -1), p(-1, 1, 1)),               // left
-             test::quad(p(1, -1, -1), p(1, -1, 1), p(1, 1, 1), p(1, 1, -1))})                  // right
+    for (const auto& q :
+        { test::quad(p(-1, -1, 1), p(1, -1, 1), p(1, -1, -1), p(-1, -1, -1)), // floor, facing up
+            test::quad(p(-1, 1, -1), p(1, 1, -1), p(1, 1, 1), p(-1, 1, 1)), // ceiling
+            test::quad(p(-1, -1, -1), p(1, -1, -1), p(1, 1, -1), p(-1, 1, -1)), // back
+            test::quad(p(1, -1, 1), p(-1, -1, 1), p(-1, 1, 1), p(1, 1, 1)), // front
+            test::quad(p(-1, -1, 1), p(-1, -1, -1), p(-1, 1, -1), p(-1, 1, 1)), // left
+            test::quad(p(1, -1, -1), p(1, -1, 1), p(1, 1, 1), p(1, 1, -1)) }) // right
         walls.insert(walls.end(), q.begin(), q.end());
     scene.meshes.push_back(test::makeTriangles(walls, 0));
-    scene.meshes.push_back(test::makeTriangles(
-        test::quad(p(-0.3f, -0.5f, 0.3f), p(0.3f, -0.5f, 0.3f), p(0.3f, -0.5f, -0.3f), p(-0.3f, -0.5f, -0.3f)), 1));
-    scene.pointLights.push_back({p(0.0f, 0.6f, 0.0f), glm::vec3(scale * scale), true});
+    scene.meshes.push_back(test::makeTriangles(test::quad(p(-0.3f, -0.5f, 0.3f), p(0.3f, -0.5f, 0.3f),
+                                                   p(0.3f, -0.5f, -0.3f), p(-0.3f, -0.5f, -0.3f)),
+        1));
+    scene.pointLights.push_back({ p(0.0f, 0.6f, 0.0f), glm::vec3(scale * scale), true });
     scene.camera.position = p(0.0f, 0.0f, 0.9f);
     scene.camera.lookAt = p(0.0f, -0.2f, 0.0f);
     scene.camera.fovYDeg = 70.0f;
@@ -102,7 +105,8 @@ private slots:
     void modelFilesAtAnyScaleAndOffset();
 
 private:
-    render::RadianceImage render(const render::Scene& scene, const render::RenderSettings& settings, int size = 32);
+    render::RadianceImage render(
+        const render::Scene& scene, const render::RenderSettings& settings, int size = 32);
     void expectSane(const render::RadianceImage& image, float bound);
     test::GlTestContext m_gl;
 };
@@ -113,7 +117,8 @@ void HardCasesTest::initTestCase()
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
 }
 
-render::RadianceImage HardCasesTest::render(const render::Scene& scene, const render::RenderSettings& settings, int size)
+render::RadianceImage HardCasesTest::render(
+    const render::Scene& scene, const render::RenderSettings& settings, int size)
 {
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setGridBounds({});
@@ -125,28 +130,31 @@ render::RadianceImage HardCasesTest::render(const render::Scene& scene, const re
 void HardCasesTest::expectSane(const render::RadianceImage& image, float bound)
 {
     for (const render::NonFiniteCount& c : m_gl.renderer->countNonFinite())
-        QVERIFY2(c.count == 0, qPrintable(QString("%1 non-finite texels in %2").arg(c.count).arg(c.resource.c_str())));
+        QVERIFY2(c.count == 0,
+            qPrintable(QString("%1 non-finite texels in %2").arg(c.count).arg(c.resource.c_str())));
     const auto errors = m_gl.renderer->takeGlErrors();
     QVERIFY2(errors.empty(), errors.empty() ? "" : errors.front().c_str());
     for (const glm::vec3& p : image.pixels)
         for (int c = 0; c < 3; ++c)
-            QVERIFY2(p[c] >= 0.0f && p[c] <= bound, qPrintable(QString("pixel value %1 outside [0, %2]").arg(p[c]).arg(bound)));
+            QVERIFY2(p[c] >= 0.0f && p[c] <= bound,
+                qPrintable(QString("pixel value %1 outside [0, %2]").arg(p[c]).arg(bound)));
 }
 
 void HardCasesTest::degenerateGeometry()
 {
     render::Scene scene = room();
     // Zero-area, needle, repeated-vertex and non-finite triangles, missing and zero normals, both windings.
-    render::Mesh junk = test::makeTriangles({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, // a point
-        {-0.5f, 0, 0}, {0.5f, 0, 0}, {0.5f, 1e-7f, 0},                       // a needle
-        {0, 0.2f, 0}, {0.3f, 0.2f, 0}, {0.3f, 0.2f, 0},                      // two equal corners
-        {0, 0.3f, 0}, {kNaN, 0.3f, 0}, {0, 0.5f, 0},                         // NaN position
-        {0, 0.3f, 0.2f}, {kInf, 0.3f, 0.2f}, {0, 0.5f, 0.2f},                // Inf position
-        {0.2f, -0.2f, 0}, {0.2f, 0.2f, 0.1f}, {0.6f, -0.2f, 0}});           // inverted winding
+    render::Mesh junk = test::makeTriangles({ { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, // a point
+        { -0.5f, 0, 0 }, { 0.5f, 0, 0 }, { 0.5f, 1e-7f, 0 }, // a needle
+        { 0, 0.2f, 0 }, { 0.3f, 0.2f, 0 }, { 0.3f, 0.2f, 0 }, // two equal corners
+        { 0, 0.3f, 0 }, { kNaN, 0.3f, 0 }, { 0, 0.5f, 0 }, // NaN position
+        { 0, 0.3f, 0.2f }, { kInf, 0.3f, 0.2f }, { 0, 0.5f, 0.2f }, // Inf position
+        { 0.2f, -0.2f, 0 }, { 0.2f, 0.2f, 0.1f }, { 0.6f, -0.2f, 0 } }); // inverted winding
     for (std::size_t i = 0; i < junk.normals.size(); ++i)
         junk.normals[i] = i % 3 == 0 ? glm::vec3(0.0f) : (i % 3 == 1 ? glm::vec3(kNaN) : junk.normals[i]);
     scene.meshes.push_back(junk);
-    render::Mesh noNormals = test::makeTriangles(test::quad({-0.2f, 0.1f, -0.5f}, {0.2f, 0.1f, -0.5f}, {0.2f, 0.4f, -0.5f}, {-0.2f, 0.4f, -0.5f}));
+    render::Mesh noNormals = test::makeTriangles(test::quad(
+        { -0.2f, 0.1f, -0.5f }, { 0.2f, 0.1f, -0.5f }, { 0.2f, 0.4f, -0.5f }, { -0.2f, 0.4f, -0.5f }));
     noNormals.normals.clear();
     scene.meshes.push_back(noNormals);
     render::RenderSettings settings;
@@ -219,24 +227,44 @@ void HardCasesTest::extremeLightsAndMaterials()
     render::Scene scene = room();
     float bound = 10.0f;
     switch (kind) {
-    case 0: scene.pointLights[0].position = glm::vec3(0.0f, -1.0f, 0.0f); bound = 1e6f; break; // on the floor
+    case 0:
+        scene.pointLights[0].position = glm::vec3(0.0f, -1.0f, 0.0f);
+        bound = 1e6f;
+        break; // on the floor
     case 1: { // inside a closed cube
         std::vector<glm::vec3> cube;
         const float s = 0.1f;
-        for (const auto& q : {test::quad({-s, -s, s}, {s, -s, s}, {s, s, s}, {-s, s, s}), test::quad({s, -s, -s}, {-s, -s, -s}, {-s, s, -s}, {s, s, -s}),
-                 test::quad({-s, -s, -s}, {-s, -s, s}, {-s, s, s}, {-s, s, -s}), test::quad({s, -s, s}, {s, -s, -s}, {s, s, -s}, {s, s, s}),
-                 test::quad({-s, s, s}, {s, s, s}, {s, s, -s}, {-s, s, -s}), test::quad({-s, -s, -s}, {s, -s, -s}, {s, -s, s}, {-s, -s, s})})
+        for (const auto& q : { test::quad({ -s, -s, s }, { s, -s, s }, { s, s, s }, { -s, s, s }),
+                 test::quad({ s, -s, -s }, { -s, -s, -s }, { -s, s, -s }, { s, s, -s }),
+                 test::quad({ -s, -s, -s }, { -s, -s, s }, { -s, s, s }, { -s, s, -s }),
+                 test::quad({ s, -s, s }, { s, -s, -s }, { s, s, -s }, { s, s, s }),
+                 test::quad({ -s, s, s }, { s, s, s }, { s, s, -s }, { -s, s, -s }),
+                 test::quad({ -s, -s, -s }, { s, -s, -s }, { s, -s, s }, { -s, -s, s }) })
             for (const glm::vec3& v : q)
                 cube.push_back(v + glm::vec3(0.0f, 0.6f, 0.0f));
         scene.meshes.push_back(test::makeTriangles(cube, 0));
         bound = 1e3f;
         break;
     }
-    case 2: scene.pointLights[0].intensity = glm::vec3(0.0f); bound = 0.0f; break;
-    case 3: scene.pointLights[0].intensity = glm::vec3(1e6f); bound = 1e8f; break;
-    case 4: scene.materials[1].emission = glm::vec3(1e6f); scene.pointLights.clear(); bound = 2e6f; break;
-    case 5: scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(0.0f); break;
-    case 6: scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(1.0f); break;
+    case 2:
+        scene.pointLights[0].intensity = glm::vec3(0.0f);
+        bound = 0.0f;
+        break;
+    case 3:
+        scene.pointLights[0].intensity = glm::vec3(1e6f);
+        bound = 1e8f;
+        break;
+    case 4:
+        scene.materials[1].emission = glm::vec3(1e6f);
+        scene.pointLights.clear();
+        bound = 2e6f;
+        break;
+    case 5:
+        scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(0.0f);
+        break;
+    case 6:
+        scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(1.0f);
+        break;
     case 7: // 1000 x 1 x 1000: a floor under a very low ceiling
         for (render::Mesh& mesh : scene.meshes) {
             mesh.transform = glm::mat4(1.0f);
@@ -253,14 +281,21 @@ void HardCasesTest::extremeLightsAndMaterials()
         lamp.emission = glm::vec3(5.0f);
         scene.materials.push_back(lamp);
         const int m = int(scene.materials.size()) - 1;
-        scene.meshes.push_back(test::makeTriangles({{0, 0.9f, 0}, {0, 0.9f, 0}, {0, 0.9f, 0}, {-0.2f, 0.9f, 0}, {0.2f, 0.9f, 0},
-            {0.0f, 0.9f, 0}, {-0.1f, 0.95f, -0.1f}, {-0.1f, 0.95f, 0.1f}, {0.1f, 0.95f, 0.1f}}, m));
+        scene.meshes.push_back(test::makeTriangles(
+            { { 0, 0.9f, 0 }, { 0, 0.9f, 0 }, { 0, 0.9f, 0 }, { -0.2f, 0.9f, 0 }, { 0.2f, 0.9f, 0 },
+                { 0.0f, 0.9f, 0 }, { -0.1f, 0.95f, -0.1f }, { -0.1f, 0.95f, 0.1f }, { 0.1f, 0.95f, 0.1f } },
+            m));
         bound = 10.0f;
         break;
     }
-    case 9: scene.materials[1].emission = glm::vec3(-5.0f, 1.0f, -1.0f); break;
-    case 10: scene.materials[1].emission = glm::vec3(kNaN, kInf, 1.0f); break;
-    case 11: { // a ceiling of 100 x 100 small emissive quads: more than the area lights take, lit through the voxels
+    case 9:
+        scene.materials[1].emission = glm::vec3(-5.0f, 1.0f, -1.0f);
+        break;
+    case 10:
+        scene.materials[1].emission = glm::vec3(kNaN, kInf, 1.0f);
+        break;
+    case 11: { // a ceiling of 100 x 100 small emissive quads: more than the area lights take, lit through the
+               // voxels
         render::Material lamp;
         lamp.emission = glm::vec3(0.5f);
         scene.materials.push_back(lamp);
@@ -268,7 +303,8 @@ void HardCasesTest::extremeLightsAndMaterials()
         for (int i = 0; i < 100; ++i)
             for (int j = 0; j < 50; ++j) {
                 const float x = -0.9f + 0.018f * float(i), z = -0.9f + 0.036f * float(j), y = 0.98f;
-                for (const glm::vec3& v : test::quad({x, y, z + 0.01f}, {x + 0.01f, y, z + 0.01f}, {x + 0.01f, y, z}, {x, y, z}))
+                for (const glm::vec3& v : test::quad(
+                         { x, y, z + 0.01f }, { x + 0.01f, y, z + 0.01f }, { x + 0.01f, y, z }, { x, y, z }))
                     tiles.push_back(v);
             }
         scene.meshes.push_back(test::makeTriangles(tiles, int(scene.materials.size()) - 1));
@@ -278,7 +314,8 @@ void HardCasesTest::extremeLightsAndMaterials()
         render::Material lamp;
         lamp.emission = glm::vec3(1.0f);
         scene.materials.push_back(lamp);
-        scene.meshes.push_back(test::makeTriangles(test::quad({-50, 0.95f, 50}, {50, 0.95f, 50}, {50, 0.95f, -50}, {-50, 0.95f, -50}),
+        scene.meshes.push_back(test::makeTriangles(
+            test::quad({ -50, 0.95f, 50 }, { 50, 0.95f, 50 }, { 50, 0.95f, -50 }, { -50, 0.95f, -50 }),
             int(scene.materials.size()) - 1));
         break;
     }
@@ -289,8 +326,9 @@ void HardCasesTest::extremeLightsAndMaterials()
     expectSane(image, bound);
     if (kind >= 8) {
         const render::AreaLightSet lights = render::AreaLightSet::fromScene(scene);
-        qInfo("%zu emissive triangles, %zu dropped, %zu area lights%s%s", lights.emissiveTriangles, lights.droppedTriangles,
-            lights.lights.size(), lights.note.empty() ? "" : ": ", lights.note.c_str());
+        qInfo("%zu emissive triangles, %zu dropped, %zu area lights%s%s", lights.emissiveTriangles,
+            lights.droppedTriangles, lights.lights.size(), lights.note.empty() ? "" : ": ",
+            lights.note.c_str());
         if (kind == 8)
             QVERIFY(lights.droppedTriangles == 2 && lights.lights.size() == 1);
         if (kind == 11)
@@ -304,7 +342,8 @@ void HardCasesTest::awkwardCameras_data()
 {
     QTest::addColumn<glm::vec3>("position");
     QTest::addColumn<glm::vec3>("lookAt");
-    QTest::newRow("inside the box on the floor") << glm::vec3(0.0f, -0.6f, 0.0f) << glm::vec3(0.0f, -0.6f, -1.0f);
+    QTest::newRow("inside the box on the floor")
+        << glm::vec3(0.0f, -0.6f, 0.0f) << glm::vec3(0.0f, -0.6f, -1.0f);
     QTest::newRow("grazing the floor") << glm::vec3(0.0f, -0.999f, 0.9f) << glm::vec3(0.0f, -0.999f, -1.0f);
     QTest::newRow("at the grid boundary") << glm::vec3(0.0f, 0.0f, 1.06f) << glm::vec3(0.0f);
     QTest::newRow("outside the grid") << glm::vec3(3.0f, 2.0f, 8.0f) << glm::vec3(0.0f);
@@ -329,11 +368,12 @@ void HardCasesTest::settingsAtTheirLimits_data()
 {
     QTest::addColumn<QString>("key");
     QTest::addColumn<QString>("value");
-    for (const auto& [k, v] : std::initializer_list<std::pair<const char*, const char*>>{{"voxel_res", "8"},
-             {"voxel_res", "256"}, {"diffuse_cones", "1"}, {"diffuse_cones", "32"}, {"diffuse_aperture", "0.5"},
-             {"diffuse_aperture", "179"}, {"specular_aperture", "0.5"}, {"step", "0.05"}, {"step", "10"},
-             {"max_distance", "0"}, {"cone_offset", "0"}, {"indirect_res", "4"}, {"anisotropic", "on"},
-             {"anisotropic", "off"}, {"irradiance_cache", "on"}, {"shadow_map", "64"}})
+    for (const auto& [k, v] : std::initializer_list<std::pair<const char*, const char*>> {
+             { "voxel_res", "8" }, { "voxel_res", "256" }, { "diffuse_cones", "1" },
+             { "diffuse_cones", "32" }, { "diffuse_aperture", "0.5" }, { "diffuse_aperture", "179" },
+             { "specular_aperture", "0.5" }, { "step", "0.05" }, { "step", "10" }, { "max_distance", "0" },
+             { "cone_offset", "0" }, { "indirect_res", "4" }, { "anisotropic", "on" },
+             { "anisotropic", "off" }, { "irradiance_cache", "on" }, { "shadow_map", "64" } })
         QTest::newRow(qPrintable(QString("%1=%2").arg(k, v))) << QString(k) << QString(v);
 }
 
@@ -376,9 +416,9 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 
 void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
 {
-    for (const int bounces : {1, 2, render::RenderSettings::kConvergedBounces})
-        for (const bool anisotropic : {false, true})
-            for (const int resolution : {8, 32}) {
+    for (const int bounces : { 1, 2, render::RenderSettings::kConvergedBounces })
+        for (const bool anisotropic : { false, true })
+            for (const int resolution : { 8, 32 }) {
                 render::RenderSettings settings;
                 settings.voxelResolution = resolution;
                 settings.anisotropicMips = anisotropic;
@@ -397,8 +437,8 @@ void HardCasesTest::whiteFurnace()
     const float expected = emission + rho * emission;
     // 7% with 60-degree cones (measured 5.5%): voxels on the box's edges and corners average wall with empty
     // space, so cones leaving through them see less than a full wall, and a wide cone leaving at an angle
-    // narrows to keep clear of its own wall (common/ConeTracing.glsl), reaching the leaky coarse levels later.
-    // 10% with the default 30-degree cones: steps through a wall one voxel thick see it at a coarser,
+    // narrows to keep clear of its own wall (common/ConeTracing.glsl), reaching the leaky coarse levels
+    // later. 10% with the default 30-degree cones: steps through a wall one voxel thick see it at a coarser,
     // half-empty level (measured 7.2%; docs/STABILITY.md).
     // The irradiance cache gathers the same cones per cell instead of per pixel, so the same bound holds.
     struct Case {
@@ -407,8 +447,8 @@ void HardCasesTest::whiteFurnace()
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : {Case {false, 60.0f, false, 0.0f}, Case {true, 60.0f, false, 0.07f}, Case {true, 30.0f, false, 0.10f},
-             Case {true, 30.0f, true, 0.10f}}) {
+    for (const Case c : { Case { false, 60.0f, false, 0.0f }, Case { true, 60.0f, false, 0.07f },
+             Case { true, 30.0f, false, 0.10f }, Case { true, 30.0f, true, 0.10f } }) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
         settings.bounces = 1; // pixels see E + rho E: the capture of one gather, alone
@@ -420,7 +460,8 @@ void HardCasesTest::whiteFurnace()
         const render::RadianceImage image = render(scene, settings, 48);
         expectSane(image, 2.0f * expected);
         const float mean = io::ImageMetrics::meanRadiance(image).r;
-        qInfo("white furnace with %s mips, %.0f-degree cones%s: mean %.4f, expected %.4f (bounce %.0f%% of rho E)",
+        qInfo("white furnace with %s mips, %.0f-degree cones%s: mean %.4f, expected %.4f (bounce %.0f%% of "
+              "rho E)",
             c.anisotropic ? "anisotropic" : "box-filtered", double(c.apertureDeg),
             c.irradianceCache ? ", irradiance cache" : "", double(mean), double(expected),
             100.0 * double(mean - emission) / double(rho * emission));
@@ -428,18 +469,20 @@ void HardCasesTest::whiteFurnace()
             QVERIFY(mean >= emission); // never less than the emission itself
             continue;
         }
-        QVERIFY2(std::abs(mean - expected) <= c.tolerance * expected, qPrintable(QString::number(double(mean))));
+        QVERIFY2(
+            std::abs(mean - expected) <= c.tolerance * expected, qPrintable(QString::number(double(mean))));
         int outliers = 0;
         for (const glm::vec3& p : image.pixels)
             outliers += std::abs(p.r - expected) > 0.15f * expected ? 1 : 0;
-        QVERIFY2(outliers <= int(image.pixels.size() / 20), qPrintable(QString("%1 pixels off by more than 15%").arg(outliers)));
+        QVERIFY2(outliers <= int(image.pixels.size() / 20),
+            qPrintable(QString("%1 pixels off by more than 15%").arg(outliers)));
     }
 }
 
 // With bounces = 2 each voxel gathers a bounce first, so pixels see E + rho E + rho^2 E. Each gather captures
-// a share c of the light around it (c = 0.82 with anisotropic mips and 60-degree cones, from the single-bounce
-// case), so the renderer should give E + rho c (E + rho c E): within 1% of that (the gather per cell and per
-// pixel is the same code), and within 11% of the physical value (measured 9.8%: c compounds).
+// a share c of the light around it (c = 0.82 with anisotropic mips and 60-degree cones, from the
+// single-bounce case), so the renderer should give E + rho c (E + rho c E): within 1% of that (the gather per
+// cell and per pixel is the same code), and within 11% of the physical value (measured 9.8%: c compounds).
 void HardCasesTest::whiteFurnaceSecondBounce()
 {
     const float rho = 0.5f, emission = 1.0f;
@@ -459,8 +502,8 @@ void HardCasesTest::whiteFurnaceSecondBounce()
     expectSane(image, 2.0f * physical);
     const float mean = io::ImageMetrics::meanRadiance(image).r;
     const float model = emission + rho * capture * (emission + rho * capture * emission);
-    qInfo("white furnace, two bounces: mean %.4f, gather model %.4f (capture %.3f), physical %.4f", double(mean),
-        double(model), double(capture), double(physical));
+    qInfo("white furnace, two bounces: mean %.4f, gather model %.4f (capture %.3f), physical %.4f",
+        double(mean), double(model), double(capture), double(physical));
     QVERIFY2(std::abs(mean - model) <= 0.01f * model, qPrintable(QString::number(double(mean))));
     QVERIFY2(std::abs(mean - physical) <= 0.11f * physical, qPrintable(QString::number(double(mean))));
 }
@@ -472,11 +515,11 @@ void HardCasesTest::whiteFurnaceConverged_data()
     QTest::newRow("rho 0.8") << 0.8f;
 }
 
-// The defaults: the emitting walls are one area light, so the pixels' direct light is exact, E + rho E (checked
-// alone with indirect light off, where nothing else adds to it), and the voxels converge to rho E / (1 - rho c),
-// c being the share of its surroundings one gather captures (measured as in whiteFurnace). Pixels then read
-// E + rho E / (1 - rho c), which falls short of the physical E / (1 - rho) by what the cones leak through
-// one-voxel walls (docs/STABILITY.md has the figures).
+// The defaults: the emitting walls are one area light, so the pixels' direct light is exact, E + rho E
+// (checked alone with indirect light off, where nothing else adds to it), and the voxels converge to rho E /
+// (1 - rho c), c being the share of its surroundings one gather captures (measured as in whiteFurnace).
+// Pixels then read E + rho E / (1 - rho c), which falls short of the physical E / (1 - rho) by what the cones
+// leak through one-voxel walls (docs/STABILITY.md has the figures).
 void HardCasesTest::whiteFurnaceConverged()
 {
     QFETCH(float, rho);
@@ -487,7 +530,8 @@ void HardCasesTest::whiteFurnaceConverged()
     settings.indirectDivisor = 1;
     settings.bounces = 1;
     settings.direct = false;
-    const float capture = (io::ImageMetrics::meanRadiance(render(scene, settings, 48)).r - emission) / (rho * emission);
+    const float capture
+        = (io::ImageMetrics::meanRadiance(render(scene, settings, 48)).r - emission) / (rho * emission);
 
     render::RenderSettings defaults;
     defaults.voxelResolution = 64;
@@ -506,19 +550,21 @@ void HardCasesTest::whiteFurnaceConverged()
     expectSane(image, 2.0f * physical);
     const float mean = io::ImageMetrics::meanRadiance(image).r;
     const float model = emission + rho * emission / (1.0f - rho * capture);
-    qInfo("white furnace, rho %.1f: area light alone %.4f (exact %.4f, %d pixels off by 2%%); converged bounces %.4f, "
+    qInfo("white furnace, rho %.1f: area light alone %.4f (exact %.4f, %d pixels off by 2%%); converged "
+          "bounces %.4f, "
           "gather model %.4f (capture %.3f), physical %.4f (%.1f%% short)",
-        double(rho), double(directMean), double(emission * (1.0f + rho)), outliers, double(mean), double(model),
-        double(capture), double(physical), 100.0 * double(1.0f - mean / physical));
-    QVERIFY2(std::abs(directMean - emission * (1.0f + rho)) <= 0.01f * emission * (1.0f + rho), qPrintable(QString::number(double(directMean))));
+        double(rho), double(directMean), double(emission * (1.0f + rho)), outliers, double(mean),
+        double(model), double(capture), double(physical), 100.0 * double(1.0f - mean / physical));
+    QVERIFY2(std::abs(directMean - emission * (1.0f + rho)) <= 0.01f * emission * (1.0f + rho),
+        qPrintable(QString::number(double(directMean))));
     QCOMPARE(outliers, 0);
     QVERIFY2(std::abs(mean - model) <= 0.03f * model, qPrintable(QString::number(double(mean))));
     QVERIFY2(mean > emission * (1.0f + rho) && mean < physical, qPrintable(QString::number(double(mean))));
 }
 
-// No popping: nudging the camera by 1e-4 of the scene or the light by a hundredth of a voxel changes the image
-// by little. Bound: relative MSE 1e-5, a hundred times what was measured (3e-8 and 1.3e-7), yet far below
-// what a pixel flipping across an edge would cost.
+// No popping: nudging the camera by 1e-4 of the scene or the light by a hundredth of a voxel changes the
+// image by little. Bound: relative MSE 1e-5, a hundred times what was measured (3e-8 and 1.3e-7), yet far
+// below what a pixel flipping across an edge would cost.
 void HardCasesTest::smallChangesGiveSmallDifferences()
 {
     render::RenderSettings settings;
@@ -532,7 +578,8 @@ void HardCasesTest::smallChangesGiveSmallDifferences()
     render::Scene nudgedLight = scene;
     nudgedLight.pointLights[0].position.x += 0.01f * (2.0f / 30.0f); // a hundredth of a voxel
     const double lightError = io::ImageMetrics::relativeMse(render(nudgedLight, settings, 48), base);
-    qInfo("camera moved 1e-4 of the room: relative MSE %.2e; light moved 1/100 voxel: %.2e", cameraError, lightError);
+    qInfo("camera moved 1e-4 of the room: relative MSE %.2e; light moved 1/100 voxel: %.2e", cameraError,
+        lightError);
     QVERIFY2(cameraError < 1e-5, qPrintable(QString::number(cameraError)));
     QVERIFY2(lightError < 1e-5, qPrintable(QString::number(lightError)));
 }
@@ -542,7 +589,7 @@ void HardCasesTest::finerGridsConverge()
 {
     render::Scene scene = room();
     std::vector<render::RadianceImage> images;
-    for (int resolution : {64, 128, 256}) {
+    for (int resolution : { 64, 128, 256 }) {
         render::RenderSettings settings;
         settings.voxelResolution = resolution;
         images.push_back(render(scene, settings, 48));
@@ -562,43 +609,48 @@ void HardCasesTest::thinWallLeak()
     render::Scene scene;
     render::Material white;
     white.albedo = glm::vec3(0.7f);
-    scene.materials = {white};
+    scene.materials = { white };
     std::vector<glm::vec3> walls;
     const auto add = [&](const std::vector<glm::vec3>& q) { walls.insert(walls.end(), q.begin(), q.end()); };
-    add(test::quad({-2, -1, 1}, {2, -1, 1}, {2, -1, -1}, {-2, -1, -1}));  // floor
-    add(test::quad({-2, 1, -1}, {2, 1, -1}, {2, 1, 1}, {-2, 1, 1}));      // ceiling
-    add(test::quad({-2, -1, -1}, {2, -1, -1}, {2, 1, -1}, {-2, 1, -1}));  // back
-    add(test::quad({2, -1, 1}, {-2, -1, 1}, {-2, 1, 1}, {2, 1, 1}));      // front
-    add(test::quad({-2, -1, 1}, {-2, -1, -1}, {-2, 1, -1}, {-2, 1, 1}));  // left end
-    add(test::quad({2, -1, -1}, {2, -1, 1}, {2, 1, 1}, {2, 1, -1}));      // right end
-    const float t = 0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f;           // half a tenth of a voxel
-    add(test::quad({-t, -1, -1}, {-t, -1, 1}, {-t, 1, 1}, {-t, 1, -1}));  // divider, facing the lit room
-    add(test::quad({t, -1, 1}, {t, -1, -1}, {t, 1, -1}, {t, 1, 1}));      // divider, facing the dark room
+    add(test::quad({ -2, -1, 1 }, { 2, -1, 1 }, { 2, -1, -1 }, { -2, -1, -1 })); // floor
+    add(test::quad({ -2, 1, -1 }, { 2, 1, -1 }, { 2, 1, 1 }, { -2, 1, 1 })); // ceiling
+    add(test::quad({ -2, -1, -1 }, { 2, -1, -1 }, { 2, 1, -1 }, { -2, 1, -1 })); // back
+    add(test::quad({ 2, -1, 1 }, { -2, -1, 1 }, { -2, 1, 1 }, { 2, 1, 1 })); // front
+    add(test::quad({ -2, -1, 1 }, { -2, -1, -1 }, { -2, 1, -1 }, { -2, 1, 1 })); // left end
+    add(test::quad({ 2, -1, -1 }, { 2, -1, 1 }, { 2, 1, 1 }, { 2, 1, -1 })); // right end
+    const float t = 0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f; // half a tenth of a voxel
+    add(test::quad(
+        { -t, -1, -1 }, { -t, -1, 1 }, { -t, 1, 1 }, { -t, 1, -1 })); // divider, facing the lit room
+    add(test::quad({ t, -1, 1 }, { t, -1, -1 }, { t, 1, -1 }, { t, 1, 1 })); // divider, facing the dark room
     scene.meshes.push_back(test::makeTriangles(walls, 0));
-    scene.pointLights.push_back({{-1.0f, 0.5f, 0.0f}, glm::vec3(2.0f), true});
+    scene.pointLights.push_back({ { -1.0f, 0.5f, 0.0f }, glm::vec3(2.0f), true });
     // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
-    // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones (measured
-    // 4.4% against 1.9%): a floor cell under the wall belongs to both rooms and gathers from one point above
-    // the wall's voxels, where pixel cones start on their own side; hence its own bound (docs/STABILITY.md).
-    for (const int bounces : {1, render::RenderSettings::kConvergedBounces})
-    for (const bool irradianceCache : {false, true}) {
-        render::RenderSettings settings;
-        settings.voxelResolution = 32;
-        settings.bounces = bounces;
-        settings.irradianceCache = irradianceCache;
-        scene.camera = {{-1.0f, 0.0f, 0.9f}, {-1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
-        const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-        expectSane(m_gl.renderer->readFrame(), 10.0f);
-        scene.camera = {{1.0f, 0.0f, 0.9f}, {1.0f, -0.3f, -1.0f}, {0, 1, 0}, 70.0f, 0.01f};
-        const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-        expectSane(m_gl.renderer->readFrame(), 10.0f);
-        const double leak = dark / lit;
-        qInfo("thin wall%s, %s: lit room %.4f, dark room %.4f, leak %.2f%%", irradianceCache ? ", irradiance cache" : "",
-            bounces == 1 ? "one bounce" : "converged bounces", lit, dark, 100.0 * leak);
-        QVERIFY(lit > 0.0);
-        const double bound = bounces == 1 ? (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound) : kThinWallLeakBoundConverged;
-        QVERIFY2(leak < bound, qPrintable(QString::number(leak)));
-    }
+    // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones
+    // (measured 4.4% against 1.9%): a floor cell under the wall belongs to both rooms and gathers from one
+    // point above the wall's voxels, where pixel cones start on their own side; hence its own bound
+    // (docs/STABILITY.md).
+    for (const int bounces : { 1, render::RenderSettings::kConvergedBounces })
+        for (const bool irradianceCache : { false, true }) {
+            render::RenderSettings settings;
+            settings.voxelResolution = 32;
+            settings.bounces = bounces;
+            settings.irradianceCache = irradianceCache;
+            scene.camera = { { -1.0f, 0.0f, 0.9f }, { -1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
+            const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+            expectSane(m_gl.renderer->readFrame(), 10.0f);
+            scene.camera = { { 1.0f, 0.0f, 0.9f }, { 1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
+            const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+            expectSane(m_gl.renderer->readFrame(), 10.0f);
+            const double leak = dark / lit;
+            qInfo("thin wall%s, %s: lit room %.4f, dark room %.4f, leak %.2f%%",
+                irradianceCache ? ", irradiance cache" : "",
+                bounces == 1 ? "one bounce" : "converged bounces", lit, dark, 100.0 * leak);
+            QVERIFY(lit > 0.0);
+            const double bound = bounces == 1
+                ? (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound)
+                : kThinWallLeakBoundConverged;
+            QVERIFY2(leak < bound, qPrintable(QString::number(leak)));
+        }
 }
 
 namespace {
@@ -619,7 +671,9 @@ QString writeMovedCornell(const QString& dir, const QString& name, double scale,
     for (const QString& line : QString::fromUtf8(obj.readAll()).split(QLatin1Char('\n'))) {
         if (line.startsWith(QStringLiteral("v "))) {
             const QStringList v = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
-            lines << QStringLiteral("v %1 %2 %3").arg(move(v[1].toDouble()), 0, 'g', 12).arg(move(v[2].toDouble()), 0, 'g', 12)
+            lines << QStringLiteral("v %1 %2 %3")
+                         .arg(move(v[1].toDouble()), 0, 'g', 12)
+                         .arg(move(v[2].toDouble()), 0, 'g', 12)
                          .arg(move(v[3].toDouble()), 0, 'g', 12);
         } else if (line.startsWith(QStringLiteral("mtllib"))) {
             lines << QStringLiteral("mtllib %1.mtl").arg(name);
@@ -642,7 +696,7 @@ QString writeMovedCornell(const QString& dir, const QString& name, double scale,
         return QJsonDocument::fromJson(file.readAll()).object();
     };
     const auto moved = [&](const QJsonArray& a) {
-        return QJsonArray{move(a[0].toDouble()), move(a[1].toDouble()), move(a[2].toDouble())};
+        return QJsonArray { move(a[0].toDouble()), move(a[1].toDouble()), move(a[2].toDouble()) };
     };
     QJsonObject camera = readJson(source + QStringLiteral(".camera.json"));
     camera[QStringLiteral("position")] = moved(camera[QStringLiteral("position")].toArray());
@@ -683,8 +737,8 @@ void HardCasesTest::modelFilesAtAnyScaleAndOffset_data()
 }
 
 // The path a user takes: a model file with its camera and lights files through the importer, in another unit
-// or far from the origin. Radiance is scale-free, so both renderers must give the unit box's image: VCT at the
-// defaults, the path tracer at the same seed.
+// or far from the origin. Radiance is scale-free, so both renderers must give the unit box's image: VCT at
+// the defaults, the path tracer at the same seed.
 void HardCasesTest::modelFilesAtAnyScaleAndOffset()
 {
     QFETCH(double, scale);
@@ -693,28 +747,30 @@ void HardCasesTest::modelFilesAtAnyScaleAndOffset()
     const QString dir = test::outputDir() + QStringLiteral("/moved-models");
     QDir().mkpath(dir);
     constexpr int kSize = 64;
-    const auto renderBoth = [&](const QString& model, render::RadianceImage& vct, render::RadianceImage& traced) {
-        render::Scene scene;
-        QString error;
-        QVERIFY2(doc::SceneLoader::load(model, scene, &error), qPrintable(error));
-        m_gl.renderer->setSettings(render::RenderSettings{});
-        m_gl.renderer->setGridBounds({});
-        m_gl.renderer->setScene(scene);
-        m_gl.renderer->renderFrame(scene.camera, kSize, kSize);
-        vct = m_gl.renderer->readFrame();
-        render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize);
-        QVERIFY(reference.render(64));
-        traced = reference.image();
-    };
+    const auto renderBoth
+        = [&](const QString& model, render::RadianceImage& vct, render::RadianceImage& traced) {
+              render::Scene scene;
+              QString error;
+              QVERIFY2(doc::SceneLoader::load(model, scene, &error), qPrintable(error));
+              m_gl.renderer->setSettings(render::RenderSettings {});
+              m_gl.renderer->setGridBounds({});
+              m_gl.renderer->setScene(scene);
+              m_gl.renderer->renderFrame(scene.camera, kSize, kSize);
+              vct = m_gl.renderer->readFrame();
+              render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize);
+              QVERIFY(reference.render(64));
+              traced = reference.image();
+          };
     render::RadianceImage unitVct, unitTraced, vct, traced;
     renderBoth(writeMovedCornell(dir, QStringLiteral("unit"), 1.0, 0.0), unitVct, unitTraced);
     renderBoth(writeMovedCornell(dir, QStringLiteral("moved"), scale, offset), vct, traced);
     expectSane(vct, 100.0f);
     const double vctError = io::ImageMetrics::relativeMse(vct, unitVct);
     const double tracedError = io::ImageMetrics::relativeMse(traced, unitTraced);
-    const double tracedMean = io::ImageMetrics::meanLuminance(traced) / io::ImageMetrics::meanLuminance(unitTraced);
-    qInfo("VCT relative MSE %.2e (bound %.0e); path tracer %.2e, mean %.4f of the unit box's", vctError, vctBound,
-        tracedError, tracedMean);
+    const double tracedMean
+        = io::ImageMetrics::meanLuminance(traced) / io::ImageMetrics::meanLuminance(unitTraced);
+    qInfo("VCT relative MSE %.2e (bound %.0e); path tracer %.2e, mean %.4f of the unit box's", vctError,
+        vctBound, tracedError, tracedMean);
     QVERIFY2(vctError <= vctBound, qPrintable(QString::number(vctError)));
     QVERIFY2(tracedError <= 0.01, qPrintable(QString::number(tracedError)));
     QVERIFY2(std::abs(tracedMean - 1.0) <= 0.01, qPrintable(QString::number(tracedMean)));

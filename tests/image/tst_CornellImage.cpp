@@ -36,7 +36,8 @@ void CornellImageTest::initTestCase()
     QVERIFY2(m_gl.renderer, m_gl.error.c_str());
 }
 
-render::RadianceImage CornellImageTest::renderScene(const QString& spec, int width, int height, int voxelResolution)
+render::RadianceImage CornellImageTest::renderScene(
+    const QString& spec, int width, int height, int voxelResolution)
 {
     render::Scene scene;
     QString error;
@@ -57,7 +58,8 @@ void CornellImageTest::cornellIsFiniteAndMatchesGolden()
 {
     const render::RadianceImage image = renderScene(QStringLiteral("builtin:cornell"), 64, 64, 64);
     QCOMPARE(io::ImageMetrics::nonFiniteCount(image), std::size_t(0));
-    const std::string golden = (test::sourceDir() + QStringLiteral("/tests/golden/cornell_64.pfm")).toStdString();
+    const std::string golden
+        = (test::sourceDir() + QStringLiteral("/tests/golden/cornell_64.pfm")).toStdString();
     if (qEnvironmentVariableIsSet("VCT_BLESS")) {
         std::string error;
         QVERIFY2(io::ImageFile::write(golden, image, 1.0f, &error), error.c_str());
@@ -88,8 +90,11 @@ void CornellImageTest::cornellIsFiniteAndMatchesGolden()
         io::ImageFile::write(out + "/cornell_64.diff.png", io::ImageMetrics::errorHeatmap(image, *expected),
             io::ToneMapper(1.0f, io::ToneMapper::Curve::Clamp));
     }
-    QVERIFY2(ok, qPrintable(QString("%1 channel values outside tolerance; worst excess %2; see %3")
-                     .arg(outliers).arg(worst).arg(test::outputDir())));
+    QVERIFY2(ok,
+        qPrintable(QString("%1 channel values outside tolerance; worst excess %2; see %3")
+                       .arg(outliers)
+                       .arg(worst)
+                       .arg(test::outputDir())));
 }
 
 // The box lit by a point light (the emitter version puts a blue emissive block on the left floor, which
@@ -105,7 +110,7 @@ void CornellImageTest::floorNextToRedWallIsRedder()
                 sum += glm::dvec3(image.at(x, y));
         return sum / double((x1 - x0) * (y1 - y0));
     };
-    const glm::dvec3 nearRed = mean(6, 11, 54, 60);   // floor, front left, beside the red wall
+    const glm::dvec3 nearRed = mean(6, 11, 54, 60); // floor, front left, beside the red wall
     const glm::dvec3 nearGreen = mean(53, 58, 54, 60); // the mirror-image patch beside the green wall
     const double redness = nearRed.r / nearRed.g, greenRedness = nearGreen.r / nearGreen.g;
     qInfo("floor r/g beside red wall %.3f, beside green wall %.3f", redness, greenRedness);
@@ -117,8 +122,8 @@ void CornellImageTest::referenceRelativeMse_data()
 {
     QTest::addColumn<QString>("name");
     QTest::addColumn<double>("bound");
-    // The light-transport targets (docs/ACCURACY.md): the box lit by its emitters within relative MSE 0.05; the
-    // point-lit box is at 0.033 against the aim of 0.03, bounded here a little above what it measures.
+    // The light-transport targets (docs/ACCURACY.md): the box lit by its emitters within relative MSE 0.05;
+    // the point-lit box is at 0.033 against the aim of 0.03, bounded here a little above what it measures.
     QTest::newRow("cornell") << QStringLiteral("cornell") << 0.05;
     QTest::newRow("cornell_point") << QStringLiteral("cornell_point") << 0.04;
 }
@@ -131,25 +136,31 @@ void CornellImageTest::referenceRelativeMse()
     QFETCH(QString, name);
     QFETCH(double, bound);
     const QString model = test::referenceDir() + QLatin1Char('/') + name + QStringLiteral(".obj");
-    QVERIFY2(QFile::exists(model), qPrintable("missing reference scene " + model + " (tests/data/reference)"));
+    QVERIFY2(
+        QFile::exists(model), qPrintable("missing reference scene " + model + " (tests/data/reference)"));
     doc::SceneLoadInfo info;
     render::Scene scene;
     QString error;
     QVERIFY2(doc::SceneLoader::load(model, scene, &error, &info), qPrintable(error));
     QVERIFY(info.hasCameraFile);
-    m_gl.renderer->setSettings(render::RenderSettings{});
+    m_gl.renderer->setSettings(render::RenderSettings {});
     m_gl.renderer->setScene(scene);
     m_gl.renderer->renderFrame(scene.camera, info.width, info.height);
     const render::RadianceImage image = m_gl.renderer->readFrame();
     std::string readError;
     const auto reference = io::ImageFile::read(
-        (test::referenceDir() + QLatin1Char('/') + name + QStringLiteral("_1024spp.pfm")).toStdString(), &readError);
+        (test::referenceDir() + QLatin1Char('/') + name + QStringLiteral("_1024spp.pfm")).toStdString(),
+        &readError);
     QVERIFY2(reference, readError.c_str());
     const double relMse = io::ImageMetrics::relativeMse(image, *reference);
-    const double meanRatio = io::ImageMetrics::meanLuminance(image) / io::ImageMetrics::meanLuminance(*reference);
-    const glm::vec3 mean = io::ImageMetrics::meanRadiance(image), refMean = io::ImageMetrics::meanRadiance(*reference);
-    qInfo("%s: relative MSE %.4f (bound %.2f), mean luminance %.3f of the reference; mean radiance %.4f %.4f %.4f vs "
-          "%.4f %.4f %.4f", qPrintable(name), relMse, bound, meanRatio, mean.r, mean.g, mean.b, refMean.r, refMean.g, refMean.b);
+    const double meanRatio
+        = io::ImageMetrics::meanLuminance(image) / io::ImageMetrics::meanLuminance(*reference);
+    const glm::vec3 mean = io::ImageMetrics::meanRadiance(image),
+                    refMean = io::ImageMetrics::meanRadiance(*reference);
+    qInfo("%s: relative MSE %.4f (bound %.2f), mean luminance %.3f of the reference; mean radiance %.4f %.4f "
+          "%.4f vs "
+          "%.4f %.4f %.4f",
+        qPrintable(name), relMse, bound, meanRatio, mean.r, mean.g, mean.b, refMean.r, refMean.g, refMean.b);
     QVERIFY(std::isfinite(relMse));
     QVERIFY2(relMse <= bound, qPrintable(QString::number(relMse)));
     QVERIFY2(std::abs(meanRatio - 1.0) <= 0.05, qPrintable(QString::number(meanRatio)));

@@ -13,9 +13,9 @@ using namespace vct;
 
 /**
  * The reference path tracer against an independent one: Blender Cycles' converged renders of the Cornell box
- * in tests/data/reference (1024 spp, 256 x 256), lit by emitters and by a point light. At CI sample counts both
- * images are compared after a 4 x 4 box downsample, which cuts the noise of both 16-fold while keeping any
- * systematic difference (framing, light units, one-sided emitters, BSDF normalisation) whole.
+ * in tests/data/reference (1024 spp, 256 x 256), lit by emitters and by a point light. At CI sample counts
+ * both images are compared after a 4 x 4 box downsample, which cuts the noise of both 16-fold while keeping
+ * any systematic difference (framing, light units, one-sided emitters, BSDF normalisation) whole.
  */
 class ReferenceCornellTest : public QObject {
     Q_OBJECT
@@ -41,8 +41,8 @@ void ReferenceCornellTest::agreesWithCycles()
     QFETCH(QString, name);
     QFETCH(double, maxRelativeMse);
     const QString model = test::referenceDir() + QLatin1Char('/') + name + QStringLiteral(".obj");
-    QVERIFY2(QFile::exists(model),
-        qPrintable("missing reference scene " + model + " (tests/data/reference)"));
+    QVERIFY2(
+        QFile::exists(model), qPrintable("missing reference scene " + model + " (tests/data/reference)"));
     render::Scene scene;
     doc::SceneLoadInfo info;
     QString error;

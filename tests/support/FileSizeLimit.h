@@ -14,7 +14,7 @@ public:
     bool isActive() const { return m_active; }
 
 private:
-    rlimit m_saved{};
+    rlimit m_saved {};
     void (*m_savedHandler)(int) = nullptr;
     bool m_active = false;
 };

@@ -56,7 +56,8 @@ render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material
     mesh.positions = positions;
     mesh.material = material;
     for (std::size_t i = 0; i + 2 < positions.size(); i += 3) {
-        const glm::vec3 n = glm::normalize(glm::cross(positions[i + 1] - positions[i], positions[i + 2] - positions[i]));
+        const glm::vec3 n
+            = glm::normalize(glm::cross(positions[i + 1] - positions[i], positions[i + 2] - positions[i]));
         for (int k = 0; k < 3; ++k) {
             mesh.normals.push_back(n);
             mesh.indices.push_back(std::uint32_t(i + std::size_t(k)));
@@ -67,7 +68,7 @@ render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material
 
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d)
 {
-    return {a, b, c, a, c, d};
+    return { a, b, c, a, c, d };
 }
 
 render::Aabb box(glm::vec3 lo, glm::vec3 hi)
@@ -84,7 +85,7 @@ glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size)
     // Near and far planes do not move a point across the screen: any pair projects the same.
     const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg), 1.0f, 0.01f, 100.0f);
     const glm::vec3 p = glm::project(world, view, projection, glm::vec4(0, 0, size, size));
-    return {int(p.x), size - 1 - int(p.y)};
+    return { int(p.x), size - 1 - int(p.y) };
 }
 
 } // namespace vct::test

@@ -21,12 +21,13 @@ struct TestMesh {
 };
 
 /**
- * The cube [lo, lo + size]^3, 12 triangles counter-clockwise seen from outside. Split: 4 vertices per face (24),
- * as a mesh with per-face normals has them, so only welding by position can close it.
+ * The cube [lo, lo + size]^3, 12 triangles counter-clockwise seen from outside. Split: 4 vertices per face
+ * (24), as a mesh with per-face normals has them, so only welding by position can close it.
  */
 TestMesh cube(const glm::vec3& lo = glm::vec3(0.0f), float size = 1.0f, bool split = false)
 {
-    // Each face's corners counter-clockwise seen from outside, as corner numbers with bit 0 = x, 1 = y, 2 = z.
+    // Each face's corners counter-clockwise seen from outside, as corner numbers with bit 0 = x, 1 = y, 2 =
+    // z.
     static const int kFaces[6][4] = {
         { 0, 2, 3, 1 }, // z = 0, seen from -z
         { 4, 5, 7, 6 }, // z = 1
@@ -35,7 +36,9 @@ TestMesh cube(const glm::vec3& lo = glm::vec3(0.0f), float size = 1.0f, bool spl
         { 0, 4, 6, 2 }, // x = 0
         { 1, 3, 7, 5 }, // x = 1
     };
-    const auto corner = [&](int c) { return lo + size * glm::vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1)); };
+    const auto corner = [&](int c) {
+        return lo + size * glm::vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1));
+    };
     TestMesh mesh;
     if (!split)
         for (int c = 0; c < 8; ++c)
@@ -88,7 +91,8 @@ TestMesh uvSphere(int segments, int rings)
         const double theta = glm::pi<double>() * r / rings;
         for (int s = 0; s < segments; ++s) {
             const double phi = glm::two_pi<double>() * s / segments;
-            mesh.positions.push_back(glm::vec3(glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))));
+            mesh.positions.push_back(glm::vec3(glm::dvec3(
+                std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))));
         }
     }
     const std::uint32_t south = std::uint32_t(mesh.positions.size());
@@ -119,8 +123,7 @@ QString describe(const std::optional<int>& w)
 } // namespace
 
 namespace QTest {
-template <>
-char* toString(const std::optional<int>& w)
+template <> char* toString(const std::optional<int>& w)
 {
     return qstrdup(qPrintable(describe(w)));
 }
@@ -162,11 +165,14 @@ void ClosedSurfaceTest::solidity_data()
     TestMesh holed = cube();
     holed.indices.resize(holed.indices.size() - 3);
     row("triangle missing", holed, false);
-    row("split cube, triangle missing", [] {
-        TestMesh m = cube(glm::vec3(0.0f), 1.0f, true);
-        m.indices.erase(m.indices.begin() + 9, m.indices.begin() + 12);
-        return m;
-    }(), false);
+    row(
+        "split cube, triangle missing",
+        [] {
+            TestMesh m = cube(glm::vec3(0.0f), 1.0f, true);
+            m.indices.erase(m.indices.begin() + 9, m.indices.begin() + 12);
+            return m;
+        }(),
+        false);
     // Turned inside out: closed and consistent, but it encloses negative volume.
     TestMesh inward = cube();
     for (std::size_t t = 0; t < inward.indices.size(); t += 3)
@@ -177,11 +183,14 @@ void ClosedSurfaceTest::solidity_data()
     std::swap(oneFlipped.indices[1], oneFlipped.indices[2]);
     std::swap(oneFlipped.indices[4], oneFlipped.indices[5]);
     row("one face flipped", oneFlipped, false);
-    row("open quad", TestMesh{ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { 0, 1, 2, 0, 2, 3 } }, false);
+    row("open quad",
+        TestMesh { { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { 0, 1, 2, 0, 2, 3 } }, false);
     // A quad and its back, split along the other diagonal so no directed edge repeats: closed and
     // consistent, but it encloses nothing.
     row("two-sided quad",
-        TestMesh{ { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { 0, 1, 2, 0, 2, 3, 1, 0, 3, 1, 3, 2 } }, false);
+        TestMesh {
+            { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { 0, 1, 2, 0, 2, 3, 1, 0, 3, 1, 3, 2 } },
+        false);
     TestMesh degenerate = cube();
     degenerate.indices.insert(degenerate.indices.end(), { 0, 0, 7 });
     row("degenerate triangle", degenerate, false);
@@ -206,7 +215,7 @@ void ClosedSurfaceTest::solidity_data()
     TestMesh withInf = cube();
     withInf.positions[3].z = std::numeric_limits<float>::infinity();
     row("infinite vertex", withInf, false);
-    row("empty", TestMesh{}, false);
+    row("empty", TestMesh {}, false);
 }
 
 void ClosedSurfaceTest::solidity()
@@ -214,9 +223,10 @@ void ClosedSurfaceTest::solidity()
     QFETCH(std::vector<glm::vec3>, positions);
     QFETCH(std::vector<std::uint32_t>, indices);
     QFETCH(bool, solid);
-    const TestMesh mesh{ positions, indices };
+    const TestMesh mesh { positions, indices };
     // One cluster, and several: the verdict is about the mesh, not how it was cut.
-    for (const std::size_t maxTriangles : { MeshClusters::kDefaultMaxTriangles, std::size_t(4), std::size_t(1) }) {
+    for (const std::size_t maxTriangles :
+        { MeshClusters::kDefaultMaxTriangles, std::size_t(4), std::size_t(1) }) {
         const ClosedSurface s = surface(mesh, maxTriangles);
         QCOMPARE(s.isSolid(), solid);
         // A mesh that is not solid has no inside to be in.
@@ -244,7 +254,8 @@ void ClosedSurfaceTest::windingInsideAndOutsideCube()
     QCOMPARE(s.windingNumber(glm::vec3(0.5f)), std::optional<int>(1));
 
     // Points level with the cube's faces, edges and corners (coordinates on its planes or its centre lines),
-    // where a ray may run through an edge or a vertex. Answering "none" there is allowed; a wrong count is not.
+    // where a ray may run through an edge or a vertex. Answering "none" there is allowed; a wrong count is
+    // not.
     const float levels[] = { -1.0f, 0.0f, 0.5f, 1.0f, 2.0f };
     int answered = 0, asked = 0;
     for (float x : levels)
@@ -252,7 +263,8 @@ void ClosedSurfaceTest::windingInsideAndOutsideCube()
             for (float z : levels) {
                 const glm::vec3 p(x, y, z);
                 const bool outside = x < 0.0f || x > 1.0f || y < 0.0f || y > 1.0f || z < 0.0f || z > 1.0f;
-                const bool onSurface = !outside && (x == 0.0f || x == 1.0f || y == 0.0f || y == 1.0f || z == 0.0f || z == 1.0f);
+                const bool onSurface = !outside
+                    && (x == 0.0f || x == 1.0f || y == 0.0f || y == 1.0f || z == 0.0f || z == 1.0f);
                 if (onSurface) {
                     // Either side is as right as the other on the surface itself, but nothing else is.
                     const std::optional<int> w = s.windingNumber(p);
@@ -275,15 +287,25 @@ void ClosedSurfaceTest::windingInsideAndOutsideCube()
     std::uniform_real_distribution<float> coord(-1.0f, 2.0f), unit(0.02f, 0.98f);
     for (int n = 0; n < 500; ++n) {
         const glm::vec3 p(coord(random), coord(random), coord(random));
-        const bool outside = glm::any(glm::lessThan(p, glm::vec3(-0.01f))) || glm::any(glm::greaterThan(p, glm::vec3(1.01f)));
-        const bool inside = glm::all(glm::greaterThan(p, glm::vec3(0.01f))) && glm::all(glm::lessThan(p, glm::vec3(0.99f)));
+        const bool outside = glm::any(glm::lessThan(p, glm::vec3(-0.01f)))
+            || glm::any(glm::greaterThan(p, glm::vec3(1.01f)));
+        const bool inside
+            = glm::all(glm::greaterThan(p, glm::vec3(0.01f))) && glm::all(glm::lessThan(p, glm::vec3(0.99f)));
         if (!outside && !inside)
             continue;
         QVERIFY2(s.windingNumber(p) == std::optional<int>(inside ? 1 : 0),
-            qPrintable(QStringLiteral("(%1, %2, %3): %4").arg(p.x).arg(p.y).arg(p.z).arg(describe(s.windingNumber(p)))));
+            qPrintable(QStringLiteral("(%1, %2, %3): %4")
+                           .arg(p.x)
+                           .arg(p.y)
+                           .arg(p.z)
+                           .arg(describe(s.windingNumber(p)))));
         const glm::vec3 q(unit(random), unit(random), unit(random));
         QVERIFY2(s.windingNumber(q) == std::optional<int>(1),
-            qPrintable(QStringLiteral("(%1, %2, %3): %4").arg(q.x).arg(q.y).arg(q.z).arg(describe(s.windingNumber(q)))));
+            qPrintable(QStringLiteral("(%1, %2, %3): %4")
+                           .arg(q.x)
+                           .arg(q.y)
+                           .arg(q.z)
+                           .arg(describe(s.windingNumber(q)))));
     }
     // A hair off the faces through the origin, closer than the ray test's tolerances: it may give up, but a
     // point outside must never count as inside, nor one inside as outside.
@@ -292,10 +314,12 @@ void ClosedSurfaceTest::windingInsideAndOutsideCube()
             glm::vec3 p(0.37f, 0.61f, 0.43f);
             p[axis] = -hair;
             const std::optional<int> out = s.windingNumber(p);
-            QVERIFY2(!out || *out == 0, qPrintable(QStringLiteral("%1 outside: %2").arg(hair).arg(describe(out))));
+            QVERIFY2(
+                !out || *out == 0, qPrintable(QStringLiteral("%1 outside: %2").arg(hair).arg(describe(out))));
             p[axis] = hair;
             const std::optional<int> in = s.windingNumber(p);
-            QVERIFY2(!in || *in == 1, qPrintable(QStringLiteral("%1 inside: %2").arg(hair).arg(describe(in))));
+            QVERIFY2(
+                !in || *in == 1, qPrintable(QStringLiteral("%1 inside: %2").arg(hair).arg(describe(in))));
         }
     // Far away, where a ray crosses nothing, and just off each face.
     QCOMPARE(s.windingNumber(glm::vec3(1000.0f, -2000.0f, 500.0f)), std::optional<int>(0));
@@ -359,7 +383,8 @@ void ClosedSurfaceTest::sphereIsSolid()
     QFETCH(int, maxTriangles);
     TestMesh sphere = uvSphere(32, 16);
     QCOMPARE(sphere.indices.size(), std::size_t(3 * (2 * 32 + 2 * 32 * 14)));
-    // The helper's own promise, checked before the class relies on it: every triangle faces away from the centre.
+    // The helper's own promise, checked before the class relies on it: every triangle faces away from the
+    // centre.
     for (std::size_t t = 0; t < sphere.indices.size(); t += 3) {
         const glm::vec3 a = sphere.positions[sphere.indices[t]], b = sphere.positions[sphere.indices[t + 1]],
                         c = sphere.positions[sphere.indices[t + 2]];
@@ -381,7 +406,8 @@ void ClosedSurfaceTest::sphereIsSolid()
         QCOMPARE(s.windingNumber(4.0f * dir), std::optional<int>(0));
     }
     // Level with the poles, where 32 triangles meet in one vertex, and in the equator's plane.
-    for (const glm::vec3& p : { glm::vec3(0, 0, 2), glm::vec3(0, 0, -2), glm::vec3(2, 0, 0), glm::vec3(0, -2, 0) }) {
+    for (const glm::vec3& p :
+        { glm::vec3(0, 0, 2), glm::vec3(0, 0, -2), glm::vec3(2, 0, 0), glm::vec3(0, -2, 0) }) {
         const std::optional<int> w = s.windingNumber(p);
         QVERIFY2(!w || *w == 0, qPrintable(describe(w)));
     }

@@ -33,7 +33,7 @@ private slots:
 void ConeMathTest::weightsSumToOne_data()
 {
     QTest::addColumn<int>("count");
-    for (int n : {1, 3, 5, 9, 16, 32})
+    for (int n : { 1, 3, 5, 9, 16, 32 })
         QTest::newRow(qPrintable(QString::number(n))) << n;
 }
 
@@ -71,10 +71,12 @@ void ConeMathTest::weightsMatchIndependentQuadrature()
         const double theta = (i + 0.5) * dt;
         for (int j = 0; j < np; ++j) {
             const double phi = (j + 0.5) * dp;
-            const glm::vec3 w(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
+            const glm::vec3 w(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                float(std::cos(theta)));
             int best = 0;
             for (int c = 1; c < count; ++c)
-                if (glm::dot(w, cones.directions()[std::size_t(c)]) > glm::dot(w, cones.directions()[std::size_t(best)]))
+                if (glm::dot(w, cones.directions()[std::size_t(c)])
+                    > glm::dot(w, cones.directions()[std::size_t(best)]))
                     best = c;
             integral[std::size_t(best)] += std::cos(theta) * std::sin(theta) * dt * dp / glm::pi<double>();
         }
@@ -83,7 +85,10 @@ void ConeMathTest::weightsMatchIndependentQuadrature()
     for (int c = 0; c < count; ++c) {
         total += integral[std::size_t(c)];
         QVERIFY2(std::abs(integral[std::size_t(c)] - cones.weights()[std::size_t(c)]) < 1e-3,
-            qPrintable(QString("cone %1: %2 vs %3").arg(c).arg(integral[std::size_t(c)]).arg(cones.weights()[std::size_t(c)])));
+            qPrintable(QString("cone %1: %2 vs %3")
+                           .arg(c)
+                           .arg(integral[std::size_t(c)])
+                           .arg(cones.weights()[std::size_t(c)])));
     }
     QVERIFY(std::abs(total - 1.0) < 1e-3); // the cosine lobe integrates to one
 }
@@ -105,7 +110,7 @@ void ConeMathTest::coneFootprintAndMipLevel()
     const float tan30 = std::tan(glm::radians(30.0f));
     QVERIFY(std::abs(coneDiameter(3.0f, tan30) - 6.0f * tan30) < 1e-6f);
     const float voxel = 0.25f;
-    QCOMPARE(coneMipLevel(0.1f, voxel, 7.0f), 0.0f);   // below a voxel: finest level
+    QCOMPARE(coneMipLevel(0.1f, voxel, 7.0f), 0.0f); // below a voxel: finest level
     QCOMPARE(coneMipLevel(voxel, voxel, 7.0f), 0.0f);
     QVERIFY(std::abs(coneMipLevel(4.0f * voxel, voxel, 7.0f) - 2.0f) < 1e-6f);
     QVERIFY(std::abs(coneMipLevel(3.0f * voxel, voxel, 7.0f) - std::log2(3.0f)) < 1e-6f);
@@ -164,7 +169,7 @@ void ConeMathTest::gridFitSurvivesDegenerateBounds()
     flat.extend(glm::vec3(0.0f));
     const VoxelGridFrame frame = VoxelGridFrame::fit(flat, 32);
     QVERIFY(frame.extent > 0.0f && std::isfinite(frame.extent));
-    const VoxelGridFrame empty = VoxelGridFrame::fit(Aabb{}, 32);
+    const VoxelGridFrame empty = VoxelGridFrame::fit(Aabb {}, 32);
     QVERIFY(empty.extent > 0.0f && std::isfinite(empty.origin.x));
 }
 

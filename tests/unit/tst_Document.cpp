@@ -6,8 +6,8 @@
 #include <QDir>
 #include <QFile>
 // Qt Gui comes with vct_document (QUndoStack); the test paints its textures with QImage.
-#include <QtGui/QImage>
 #include <QSignalSpy>
+#include <QtGui/QImage>
 #include <QtTest>
 
 #include <functional>
@@ -27,11 +27,13 @@ class EventLog {
 public:
     explicit EventLog(Document& document)
     {
-        QObject::connect(&document, &Document::changed, &m_context, [this](const ChangeEvent& e) { events.push_back(e); });
+        QObject::connect(
+            &document, &Document::changed, &m_context, [this](const ChangeEvent& e) { events.push_back(e); });
     }
     bool contains(ChangeEvent::Kind kind, int index) const
     {
-        return std::any_of(events.begin(), events.end(), [&](const ChangeEvent& e) { return e.kind == kind && e.index == index; });
+        return std::any_of(events.begin(), events.end(),
+            [&](const ChangeEvent& e) { return e.kind == kind && e.index == index; });
     }
     std::vector<ChangeEvent> events;
 
@@ -52,7 +54,8 @@ QString writeTriangleObj(const QString& folder, const QString& name)
     QFile obj(stem + QStringLiteral(".obj"));
     if (!obj.open(QIODevice::WriteOnly))
         return {};
-    obj.write(QStringLiteral("mtllib %1.mtl\no Wedge\nv 0 0 0\nv 0.5 0 0\nv 0 0.5 0\nusemtl imported_red\nf 1 2 3\n")
+    obj.write(QStringLiteral(
+        "mtllib %1.mtl\no Wedge\nv 0 0 0\nv 0.5 0 0\nv 0 0.5 0\nusemtl imported_red\nf 1 2 3\n")
                   .arg(name)
                   .toUtf8());
     obj.close();
@@ -76,10 +79,11 @@ QString writeTexturedObj(const QString& folder, const QString& name, QColor colo
     QFile obj(stem + QStringLiteral(".obj"));
     if (!obj.open(QIODevice::WriteOnly))
         return {};
-    obj.write(QStringLiteral("mtllib %1.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-                             "vn 0 0 1\nusemtl %1_mat\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n")
-                  .arg(name)
-                  .toUtf8());
+    obj.write(
+        QStringLiteral("mtllib %1.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                       "vn 0 0 1\nusemtl %1_mat\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n")
+            .arg(name)
+            .toUtf8());
     obj.close();
     return obj.fileName();
 }
@@ -107,7 +111,8 @@ private slots:
         QVERIFY(openCornell(doc));
         vct::render::Scene loaded;
         QString error;
-        QVERIFY2(vct::doc::SceneLoader::load(QStringLiteral("builtin:cornell"), loaded, &error), qPrintable(error));
+        QVERIFY2(vct::doc::SceneLoader::load(QStringLiteral("builtin:cornell"), loaded, &error),
+            qPrintable(error));
 
         const DocumentState& s = doc.state();
         QCOMPARE(s.materials.size(), std::size_t(5));
@@ -149,7 +154,7 @@ private slots:
         QVERIFY(!doc.state().lights.empty());
         const LightNode& light = doc.state().lights.front();
         QCOMPARE(light.name, QStringLiteral("Point light 1"));
-        QCOMPARE(std::max({light.color.x, light.color.y, light.color.z}), 1.0f);
+        QCOMPARE(std::max({ light.color.x, light.color.y, light.color.z }), 1.0f);
         const vct::render::Scene built = doc.buildRenderScene();
         QCOMPARE(built.pointLights.size(), loaded.pointLights.size());
         for (int c = 0; c < 3; ++c)
@@ -160,8 +165,8 @@ private slots:
     void everyEditPushesOneUndoableCommand_data()
     {
         QTest::addColumn<int>("edit");
-        const char* names[] = {"transform", "name", "visible", "dynamic", "duplicate", "delete", "material",
-            "light", "addLight", "removeLight", "settings"};
+        const char* names[] = { "transform", "name", "visible", "dynamic", "duplicate", "delete", "material",
+            "light", "addLight", "removeLight", "settings" };
         for (int i = 0; i < int(std::size(names)); ++i)
             QTest::newRow(names[i]) << i;
     }
@@ -173,13 +178,16 @@ private slots:
         QVERIFY(openCornell(doc));
         LightNode light;
         light.name = QStringLiteral("Extra");
-        light.position = {0.1f, 0.5f, 0.2f};
+        light.position = { 0.1f, 0.5f, 0.2f };
         light.intensity = 3.0f;
         doc.addLight(light); // so that there is a light to edit and remove
         doc.undoStack()->clear();
 
         const std::vector<std::function<void()>> edits = {
-            [&] { doc.setNodeTransform(1, {{0.1f, 0.2f, 0.3f}, {0.0f, 45.0f, 0.0f}, {1.0f, 2.0f, 1.0f}}); },
+            [&] {
+                doc.setNodeTransform(
+                    1, { { 0.1f, 0.2f, 0.3f }, { 0.0f, 45.0f, 0.0f }, { 1.0f, 2.0f, 1.0f } });
+            },
             [&] { doc.setNodeName(1, QStringLiteral("Renamed")); },
             [&] { doc.setNodeVisible(1, false); },
             [&] { doc.setNodeDynamic(1, true); },
@@ -187,7 +195,7 @@ private slots:
             [&] { doc.deleteNode(1); },
             [&] {
                 auto m = doc.state().materials[2];
-                m.albedo = {0.2f, 0.3f, 0.4f};
+                m.albedo = { 0.2f, 0.3f, 0.4f };
                 m.shininess = 50.0f;
                 m.specular = glm::vec3(0.1f);
                 doc.setMaterial(2, m);
@@ -195,7 +203,7 @@ private slots:
             [&] {
                 LightNode l = doc.state().lights.back();
                 l.intensity = 7.0f;
-                l.color = {1.0f, 0.5f, 0.25f};
+                l.color = { 1.0f, 0.5f, 0.25f };
                 doc.setLight(int(doc.state().lights.size()) - 1, l);
             },
             [&] { doc.addLight(light); },
@@ -253,15 +261,15 @@ private slots:
         QVERIFY(openCornell(doc));
         const DocumentState before = doc.state();
         for (int step = 1; step <= 5; ++step)
-            doc.setNodeTransform(0, {{0.0f, 0.1f * float(step), 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+            doc.setNodeTransform(0, { { 0.0f, 0.1f * float(step), 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         QCOMPARE(doc.undoStack()->count(), 1);
         QCOMPARE(doc.state().nodes[0].transform.translation.y, 0.5f);
         QVERIFY(doc.undoStack()->text(0).startsWith(QStringLiteral("Move ")));
 
-        doc.setNodeTransform(1, {{1.0f, 0.0f, 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
-        doc.setNodeTransform(1, {{2.0f, 0.0f, 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+        doc.setNodeTransform(1, { { 1.0f, 0.0f, 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
+        doc.setNodeTransform(1, { { 2.0f, 0.0f, 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         QCOMPARE(doc.undoStack()->count(), 2);
-        doc.setNodeTransform(0, {{0.0f, 0.7f, 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+        doc.setNodeTransform(0, { { 0.0f, 0.7f, 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         QCOMPARE(doc.undoStack()->count(), 3);
 
         doc.undoStack()->undo();
@@ -271,7 +279,7 @@ private slots:
 
         // A drag back to where it started leaves nothing to undo.
         doc.undoStack()->clear();
-        doc.setNodeTransform(0, {{0.0f, 0.3f, 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+        doc.setNodeTransform(0, { { 0.0f, 0.3f, 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         doc.setNodeTransform(0, before.nodes[0].transform);
         QCOMPARE(doc.undoStack()->count(), 0);
         QVERIFY(sameDocument(before, doc.state()));
@@ -305,7 +313,7 @@ private slots:
     {
         Document doc;
         QVERIFY(openCornell(doc));
-        doc.addLight(LightNode{});
+        doc.addLight(LightNode {});
         QCOMPARE(doc.state().lights.back().name, QStringLiteral("Point light 1"));
         const int index = int(doc.state().lights.size()) - 1;
         for (int step = 1; step <= 3; ++step) {
@@ -315,7 +323,7 @@ private slots:
         }
         QCOMPARE(doc.undoStack()->count(), 2);
 
-        for (float exposure : {1.5f, 2.0f, 2.5f}) {
+        for (float exposure : { 1.5f, 2.0f, 2.5f }) {
             auto settings = doc.state().settings;
             settings.exposure = exposure;
             doc.setSettings(settings);
@@ -346,7 +354,8 @@ private slots:
         doc.setNodeName(2, QStringLiteral("Tall box"));
         QCOMPARE(log.events.size(), std::size_t(1));
         QVERIFY(log.contains(ChangeEvent::Kind::NodeProperty, 2));
-        QCOMPARE(doc.undoStack()->text(1), QStringLiteral("Rename %1 to Tall box").arg(doc.sourceScene(0).meshes[2].name.c_str()));
+        QCOMPARE(doc.undoStack()->text(1),
+            QStringLiteral("Rename %1 to Tall box").arg(doc.sourceScene(0).meshes[2].name.c_str()));
         doc.undoStack()->undo();
         doc.undoStack()->undo();
         QCOMPARE(doc.buildRenderScene().triangleCount(), trianglesBefore);
@@ -357,16 +366,17 @@ private slots:
         Document doc;
         QVERIFY(openCornell(doc));
         EventLog log(doc);
-        doc.setNodeTransform(0, {{1.0f, 2.0f, 3.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+        doc.setNodeTransform(0, { { 1.0f, 2.0f, 3.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         QVERIFY(log.contains(ChangeEvent::Kind::NodeTransform, 0));
         const auto scene = doc.buildRenderScene();
         const glm::mat4 expected = doc.nodeWorldTransform(0);
         QCOMPARE(scene.meshes[0].transform, expected);
-        QCOMPARE(glm::vec3(expected[3]), glm::vec3(1.0f, 2.0f, 3.0f) + glm::vec3(doc.sourceScene(0).meshes[0].transform[3]));
+        QCOMPARE(glm::vec3(expected[3]),
+            glm::vec3(1.0f, 2.0f, 3.0f) + glm::vec3(doc.sourceScene(0).meshes[0].transform[3]));
 
         // T * Rz * Ry * Rx * S: a 90 degree turn about z takes +x to +y, after scaling.
         NodeTransform t;
-        t.rotationDeg = {0.0f, 0.0f, 90.0f};
+        t.rotationDeg = { 0.0f, 0.0f, 90.0f };
         t.scale = glm::vec3(2.0f);
         const glm::vec4 p = t.matrix() * glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
         QVERIFY(std::abs(p.x) < 1e-5f && std::abs(p.y - 2.0f) < 1e-5f);
@@ -407,7 +417,8 @@ private slots:
         QVERIFY(copy.name.startsWith(before.nodes[3].name));
         QCOMPARE(doc.state().nextId, before.nextId + 1);
         QCOMPARE(doc.buildRenderScene().triangleCount(),
-            doc.sourceScene(0).triangleCount() + doc.sourceScene(0).meshes[std::size_t(copy.mesh)].triangleCount());
+            doc.sourceScene(0).triangleCount()
+                + doc.sourceScene(0).meshes[std::size_t(copy.mesh)].triangleCount());
         doc.undoStack()->undo();
         QCOMPARE(doc.selectedNode(), 3);
         QVERIFY(sameDocument(before, doc.state()));
@@ -417,7 +428,8 @@ private slots:
     {
         Document doc;
         QVERIFY(openCornell(doc));
-        const QString obj = writeTriangleObj(vct::test::outputDir() + QStringLiteral("/document"), QStringLiteral("wedge"));
+        const QString obj
+            = writeTriangleObj(vct::test::outputDir() + QStringLiteral("/document"), QStringLiteral("wedge"));
         QVERIFY(!obj.isEmpty());
         const DocumentState before = doc.state();
         const std::size_t trianglesBefore = doc.buildRenderScene().triangleCount();
@@ -469,7 +481,8 @@ private slots:
         QCOMPARE(scene.textures.size(), baseTextures + 2);
         auto textureOfNode = [&](int node) -> const vct::render::TextureImage& {
             const int mesh = int(std::find(meshToNode.begin(), meshToNode.end(), node) - meshToNode.begin());
-            const int texture = scene.materials[std::size_t(scene.meshes[std::size_t(mesh)].material)].albedoTexture;
+            const int texture
+                = scene.materials[std::size_t(scene.meshes[std::size_t(mesh)].material)].albedoTexture;
             return scene.textures.at(std::size_t(texture));
         };
         const int nodes = int(doc.state().nodes.size());

@@ -25,8 +25,14 @@ struct Camera {
     glm::vec3 right() const { return glm::cross(forward, up); }
     glm::mat4 projection() const { return glm::perspective(glm::radians(90.0f), 1.0f, kNear, kFar); }
     /** The matrix of world points minus the position, which Frustum asks for. */
-    glm::mat4 relativeViewProjection() const { return projection() * glm::lookAt(glm::vec3(0.0f), forward, up); }
-    glm::mat4 worldViewProjection() const { return projection() * glm::lookAt(position, position + forward, up); }
+    glm::mat4 relativeViewProjection() const
+    {
+        return projection() * glm::lookAt(glm::vec3(0.0f), forward, up);
+    }
+    glm::mat4 worldViewProjection() const
+    {
+        return projection() * glm::lookAt(position, position + forward, up);
+    }
 
     glm::vec3 toWorld(const glm::vec3& local) const
     {
@@ -115,7 +121,8 @@ void FrustumTest::classifiesBoxes_data()
     for (int view = 0; view < 3; ++view)
         for (const glm::vec3& offset : { glm::vec3(0.0f), glm::vec3(1e5f, 0.0f, -1e5f) })
             for (const bool worldMatrix : { false, true }) {
-                // A world-space matrix with origin 0 is only as precise as its float translation: near 0 only.
+                // A world-space matrix with origin 0 is only as precise as its float translation: near 0
+                // only.
                 if (worldMatrix && offset != glm::vec3(0.0f))
                     continue;
                 for (const Case& c : cases)
@@ -149,7 +156,7 @@ void FrustumTest::emptyBoxFails()
     // An empty box is what a mesh with no finite vertex gets: nothing to draw, whatever the view.
     const Camera cam = camera(0, glm::vec3(0.0f));
     const Frustum frustum(cam.relativeViewProjection(), cam.position);
-    QVERIFY(!frustum.mayContain(Aabb{}));
+    QVERIFY(!frustum.mayContain(Aabb {}));
     // Empty along one axis only, though its other extents would cover the camera.
     Aabb flatEmpty;
     flatEmpty.min = glm::vec3(-100.0f, 1.0f, -100.0f);
@@ -174,20 +181,28 @@ void FrustumTest::conservativeOnRandomBoxes()
     std::mt19937 random(20240611u);
     // Multiples of 1/64, so the boxes are exact at an offset of 1e5 and the reference sees the same box.
     const auto grid = [](double x) { return float(std::round(x * 64.0) / 64.0); };
-    std::uniform_real_distribution<double> across(-60.0, 60.0), along(-20.0, 130.0), extent(0.05, 15.0), unit(0.0, 1.0);
+    std::uniform_real_distribution<double> across(-60.0, 60.0), along(-20.0, 130.0), extent(0.05, 15.0),
+        unit(0.0, 1.0);
     const double margin = 0.02;
     const auto inside = [&](const glm::dvec3& p) {
-        return std::abs(p.x) < p.z - margin && std::abs(p.y) < p.z - margin && p.z > kNear + margin && p.z < kFar - margin;
+        return std::abs(p.x) < p.z - margin && std::abs(p.y) < p.z - margin && p.z > kNear + margin
+            && p.z < kFar - margin;
     };
     // Signed distances (scaled) beyond each of the six planes, positive outside.
     const auto beyond = [](const glm::dvec3& p, int plane) {
         switch (plane) {
-        case 0: return p.x - p.z;
-        case 1: return -p.x - p.z;
-        case 2: return p.y - p.z;
-        case 3: return -p.y - p.z;
-        case 4: return kNear - p.z;
-        default: return p.z - kFar;
+        case 0:
+            return p.x - p.z;
+        case 1:
+            return -p.x - p.z;
+        case 2:
+            return p.y - p.z;
+        case 3:
+            return -p.y - p.z;
+        case 4:
+            return kNear - p.z;
+        default:
+            return p.z - kFar;
         }
     };
     int mustPass = 0, mustFail = 0;
@@ -196,7 +211,8 @@ void FrustumTest::conservativeOnRandomBoxes()
         const Frustum frustum(cam.relativeViewProjection(), cam.position);
         for (int n = 0; n < 3000; ++n) {
             const glm::vec3 lo(grid(across(random)), grid(across(random)), grid(along(random)));
-            const glm::vec3 hi = lo + glm::vec3(grid(extent(random)), grid(extent(random)), grid(extent(random)));
+            const glm::vec3 hi
+                = lo + glm::vec3(grid(extent(random)), grid(extent(random)), grid(extent(random)));
             const Aabb box = cam.box(lo, hi);
             bool anyInside = false;
             for (int s = 0; s < 64 && !anyInside; ++s) {
@@ -216,7 +232,13 @@ void FrustumTest::conservativeOnRandomBoxes()
             }
             const bool result = frustum.mayContain(box);
             const QString where = QStringLiteral("view %1, local box (%2 %3 %4)-(%5 %6 %7)")
-                                      .arg(view).arg(lo.x).arg(lo.y).arg(lo.z).arg(hi.x).arg(hi.y).arg(hi.z);
+                                      .arg(view)
+                                      .arg(lo.x)
+                                      .arg(lo.y)
+                                      .arg(lo.z)
+                                      .arg(hi.x)
+                                      .arg(hi.y)
+                                      .arg(hi.z);
             if (anyInside) {
                 ++mustPass;
                 QVERIFY2(result, qPrintable("culled a box with a point inside: " + where));
@@ -227,7 +249,8 @@ void FrustumTest::conservativeOnRandomBoxes()
         }
     }
     // Both kinds must have come up often, or the loop proved little.
-    QVERIFY2(mustPass > 1000 && mustFail > 1000, qPrintable(QStringLiteral("%1 %2").arg(mustPass).arg(mustFail)));
+    QVERIFY2(
+        mustPass > 1000 && mustFail > 1000, qPrintable(QStringLiteral("%1 %2").arg(mustPass).arg(mustFail)));
 }
 
 QTEST_GUILESS_MAIN(FrustumTest)

@@ -18,7 +18,8 @@ const QByteArray kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//
 
 QByteArray binaryPly(int claimedVertices, int writtenVertices)
 {
-    QByteArray bytes = "ply\nformat binary_little_endian 1.0\nelement vertex " + QByteArray::number(claimedVertices)
+    QByteArray bytes = "ply\nformat binary_little_endian 1.0\nelement vertex "
+        + QByteArray::number(claimedVertices)
         + "\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
           "property list uchar int vertex_indices\nend_header\n";
     for (int i = 0; i < writtenVertices * 3; ++i) {
@@ -33,7 +34,8 @@ QByteArray gltfWithBuffer(const QByteArray& uri)
     return R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
 "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],"min":[0,0,0]}],
-"bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"uri":")" + uri + R"(","byteLength":36}]})";
+"bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"uri":")"
+        + uri + R"(","byteLength":36}]})";
 }
 
 bool writeFile(const QString& path, const QByteArray& bytes)
@@ -90,27 +92,42 @@ void HostileModelsTest::refusedWithAClearError_data()
     QTest::newRow("empty OBJ") << "empty.obj" << QByteArray() << "";
     QTest::newRow("OBJ of text") << "words.obj" << QByteArray("this is not a model\n") << "";
     QTest::newRow("truncated OBJ") << "cut.obj" << kTriangleObj.left(30) << "";
-    QTest::newRow("OBJ face indices out of range") << "range.obj" << QByteArray("v 0 0 0\nv 1 0 0\nf 1 2 99999999\n") << "";
+    QTest::newRow("OBJ face indices out of range")
+        << "range.obj" << QByteArray("v 0 0 0\nv 1 0 0\nf 1 2 99999999\n") << "";
     QTest::newRow("truncated binary PLY") << "cut.ply" << binaryPly(3, 2) << "more than the";
-    QTest::newRow("PLY claiming 2^31-1 vertices") << "huge.ply" << binaryPly(0x7fffffff, 3) << "2147483647 instances";
-    QTest::newRow("PLY count beyond 2^31") << "beyond.ply" << binaryPly(3, 3).replace("vertex 3", "vertex 99999999999") << "count from 0";
-    QTest::newRow("PLY count negative") << "negative.ply" << binaryPly(3, 3).replace("vertex 3", "vertex -3") << "count from 0";
-    QTest::newRow("PLY without end_header") << "open.ply" << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\n") << "end_header";
-    QTest::newRow("PLY with a bad property type") << "type.ply" << binaryPly(3, 3).replace("float x", "quaternion x") << "not a valid property";
-    QTest::newRow("PLY with NUL in header") << "nul.ply" << binaryPly(3, 3).replace("float z", QByteArray("fl\0at z", 7)) << "not printable";
-    QTest::newRow("PLY element without properties") << "bare.ply"
-        << QByteArray("ply\nformat ascii 1.0\nelement vertex 100000\nend_header\n") << "no properties";
-    QTest::newRow("PLY property before element") << "order.ply"
-        << QByteArray("ply\nformat ascii 1.0\nproperty float x\nend_header\n") << "before any element";
-    QTest::newRow("PLY of an unknown format") << "format.ply"
-        << QByteArray("ply\nformat ebcdic 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n") << "unknown format";
+    QTest::newRow("PLY claiming 2^31-1 vertices")
+        << "huge.ply" << binaryPly(0x7fffffff, 3) << "2147483647 instances";
+    QTest::newRow("PLY count beyond 2^31")
+        << "beyond.ply" << binaryPly(3, 3).replace("vertex 3", "vertex 99999999999") << "count from 0";
+    QTest::newRow("PLY count negative")
+        << "negative.ply" << binaryPly(3, 3).replace("vertex 3", "vertex -3") << "count from 0";
+    QTest::newRow("PLY without end_header")
+        << "open.ply" << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\n") << "end_header";
+    QTest::newRow("PLY with a bad property type")
+        << "type.ply" << binaryPly(3, 3).replace("float x", "quaternion x") << "not a valid property";
+    QTest::newRow("PLY with NUL in header")
+        << "nul.ply" << binaryPly(3, 3).replace("float z", QByteArray("fl\0at z", 7)) << "not printable";
+    QTest::newRow("PLY element without properties")
+        << "bare.ply" << QByteArray("ply\nformat ascii 1.0\nelement vertex 100000\nend_header\n")
+        << "no properties";
+    QTest::newRow("PLY property before element")
+        << "order.ply" << QByteArray("ply\nformat ascii 1.0\nproperty float x\nend_header\n")
+        << "before any element";
+    QTest::newRow("PLY of an unknown format")
+        << "format.ply"
+        << QByteArray("ply\nformat ebcdic 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n")
+        << "unknown format";
     QTest::newRow("truncated glTF") << "cut.gltf" << gltfWithBuffer("data.bin").left(120) << "";
-    QTest::newRow("glTF of wrong types") << "types.gltf" << gltfWithBuffer("data.bin").replace(R"("count":3)", R"("count":"three")") << "";
+    QTest::newRow("glTF of wrong types")
+        << "types.gltf" << gltfWithBuffer("data.bin").replace(R"("count":3)", R"("count":"three")") << "";
     QTest::newRow("deeply nested glTF") << "deep.gltf"
-        << QByteArray("{\"asset\":{\"version\":\"2.0\"},\"extras\":" + QByteArray(100000, '[') + QByteArray(100000, ']') + "}")
-        << "nests deeper than 64";
-    QTest::newRow("truncated GLB") << "cut.glb" << QByteArray("glTF\x02\0\0\0\x40\0\0\0\xff\xff\0\0JSON{", 21) << "JSON chunk claims";
-    QTest::newRow("GLB without JSON") << "nojson.glb" << QByteArray("glTF\x02\0\0\0\x20\0\0\0\x04\0\0\0BIN\0abcd", 24) << "JSON chunk";
+                                        << QByteArray("{\"asset\":{\"version\":\"2.0\"},\"extras\":"
+                                               + QByteArray(100000, '[') + QByteArray(100000, ']') + "}")
+                                        << "nests deeper than 64";
+    QTest::newRow("truncated GLB") << "cut.glb" << QByteArray("glTF\x02\0\0\0\x40\0\0\0\xff\xff\0\0JSON{", 21)
+                                   << "JSON chunk claims";
+    QTest::newRow("GLB without JSON")
+        << "nojson.glb" << QByteArray("glTF\x02\0\0\0\x20\0\0\0\x04\0\0\0BIN\0abcd", 24) << "JSON chunk";
     QTest::newRow("binary noise as FBX") << "noise.fbx" << QByteArray(4096, '\x9c') << "";
 }
 
@@ -120,7 +137,8 @@ void HostileModelsTest::refusedWithAClearError()
     QFETCH(QByteArray, content);
     QFETCH(QString, expected);
 
-    const QString path = caseDir(QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-')))
+    const QString path
+        = caseDir(QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-')))
         + QLatin1Char('/') + fileName;
     QVERIFY(writeFile(path, content));
     vct::render::Scene scene = sceneWithOneMesh();
@@ -147,7 +165,8 @@ void HostileModelsTest::referencesOutsideTheFolderAreNotRead()
     vct::render::Scene scene;
     QString error;
     QVERIFY(!ModelImporter::importModel(gltf, scene, &error));
-    QVERIFY2(error.contains(QStringLiteral("escape.gltf")) && error.contains(QStringLiteral("outside the model's folder")),
+    QVERIFY2(error.contains(QStringLiteral("escape.gltf"))
+            && error.contains(QStringLiteral("outside the model's folder")),
         qPrintable(error));
     QVERIFY(scene.meshes.empty());
 
@@ -155,10 +174,12 @@ void HostileModelsTest::referencesOutsideTheFolderAreNotRead()
     QVERIFY(writeFile(obj, "mtllib ../secret.mtl\nusemtl Stolen\n" + kTriangleObj));
     ImportReport report;
     QVERIFY2(ModelImporter::importModel(obj, scene, &error, &report), qPrintable(error));
-    QVERIFY2(report.warnings.join('\n').contains(QStringLiteral("outside the model's folder")), qPrintable(report.warnings.join('\n')));
+    QVERIFY2(report.warnings.join('\n').contains(QStringLiteral("outside the model's folder")),
+        qPrintable(report.warnings.join('\n')));
     // Assimp still names a material after "usemtl Stolen"; its red Kd would only come from the library.
     for (const auto& material : scene.materials)
-        QVERIFY2(material.albedo != glm::vec3(1.0f, 0.0f, 0.0f), "the material library outside the folder must not be read");
+        QVERIFY2(material.albedo != glm::vec3(1.0f, 0.0f, 0.0f),
+            "the material library outside the folder must not be read");
 }
 
 void HostileModelsTest::texturePointingAtADeviceIsNotRead()
@@ -172,8 +193,10 @@ void HostileModelsTest::texturePointingAtADeviceIsNotRead()
     vct::render::Scene scene;
     QString error;
     ImportReport report;
-    QVERIFY2(ModelImporter::importModel(dir + QStringLiteral("/m.obj"), scene, &error, &report), qPrintable(error));
-    QVERIFY2(report.warnings.join('\n').contains(QStringLiteral("zero.png was not read")), qPrintable(report.warnings.join('\n')));
+    QVERIFY2(ModelImporter::importModel(dir + QStringLiteral("/m.obj"), scene, &error, &report),
+        qPrintable(error));
+    QVERIFY2(report.warnings.join('\n').contains(QStringLiteral("zero.png was not read")),
+        qPrintable(report.warnings.join('\n')));
     QVERIFY(scene.textures.empty());
     QCOMPARE(scene.triangleCount(), std::size_t(1));
 }
@@ -192,13 +215,19 @@ void HostileModelsTest::invalidUtf8NamesImport()
 
 void HostileModelsTest::preflightAcceptsValidHeaders()
 {
-    QVERIFY(ModelPreflight::checkPly(binaryPly(3, 3) + QByteArray(7, '\0'), binaryPly(3, 3).size() + 7).isEmpty());
-    const QByteArray ascii = "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nelement vertex 3\r\nproperty float x\r\n"
-                             "property float y\r\nproperty float z\r\nelement face 1\r\nproperty list uchar uint vertex_indices\r\n"
-                             "end_header\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
-    QVERIFY2(ModelPreflight::checkPly(ascii, ascii.size()).isEmpty(), qPrintable(ModelPreflight::checkPly(ascii, ascii.size())));
+    QVERIFY(ModelPreflight::checkPly(binaryPly(3, 3) + QByteArray(7, '\0'), binaryPly(3, 3).size() + 7)
+                .isEmpty());
+    const QByteArray ascii
+        = "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nelement vertex 3\r\nproperty float x\r\n"
+          "property float y\r\nproperty float z\r\nelement face 1\r\nproperty list uchar uint "
+          "vertex_indices\r\n"
+          "end_header\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
+    QVERIFY2(ModelPreflight::checkPly(ascii, ascii.size()).isEmpty(),
+        qPrintable(ModelPreflight::checkPly(ascii, ascii.size())));
     QVERIFY(ModelPreflight::checkJsonNesting(gltfWithBuffer("data.bin")).isEmpty());
-    QVERIFY(ModelPreflight::checkJsonNesting(R"({"a":"[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[["})").isEmpty());
+    QVERIFY(ModelPreflight::checkJsonNesting(
+        R"({"a":"[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[["})")
+                .isEmpty());
     QVERIFY(!ModelPreflight::checkJsonNesting("{]}").isEmpty());
 }
 

@@ -66,14 +66,17 @@ void verifyPartition(const std::vector<glm::vec3>& positions, const std::vector<
                 continue;
             for (int axis = 0; axis < 3; ++axis)
                 QVERIFY2(c.bounds.min[axis] <= p[axis] && p[axis] <= c.bounds.max[axis],
-                    qPrintable(QStringLiteral("vertex %1 outside its cluster's bounds on axis %2").arg(out[i]).arg(axis)));
+                    qPrintable(QStringLiteral("vertex %1 outside its cluster's bounds on axis %2")
+                                   .arg(out[i])
+                                   .arg(axis)));
         }
     }
     QCOMPARE(next, out.size());
 }
 
 /** A planar grid of cells x cells2, two triangles a cell, counter-clockwise, in the plane of axes u and v. */
-void grid(int cells, int cells2, int u, int v, std::vector<glm::vec3>& positions, std::vector<std::uint32_t>& indices)
+void grid(int cells, int cells2, int u, int v, std::vector<glm::vec3>& positions,
+    std::vector<std::uint32_t>& indices)
 {
     for (int j = 0; j <= cells2; ++j)
         for (int i = 0; i <= cells; ++i) {
@@ -157,8 +160,8 @@ void MeshClustersTest::sharedCentroidTerminates_data()
     for (int n = 0; n < 100; ++n) {
         copies.insert(copies.end(), { 0, 1, 2 });
         // All six corner orders: the same centroid, summed in different orders, so maybe a few ulps apart.
-        static const std::uint32_t kOrders[6][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 },
-            { 1, 0, 2 } };
+        static const std::uint32_t kOrders[6][3]
+            = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 }, { 1, 0, 2 } };
         orders.insert(orders.end(), std::begin(kOrders[n % 6]), std::end(kOrders[n % 6]));
         allButOne.insert(allButOne.end(), { 0, 1, 2 });
     }

@@ -56,12 +56,12 @@ bool makeEditedCornell(Document& doc)
     QString error;
     if (!doc.newFromScene(QStringLiteral("builtin:cornell"), &error))
         return false;
-    doc.setNodeTransform(1, {{0.1f, -0.25f, 0.3f}, {10.0f, 33.3f, -7.0f}, {1.0f, 1.5f, 0.75f}});
+    doc.setNodeTransform(1, { { 0.1f, -0.25f, 0.3f }, { 10.0f, 33.3f, -7.0f }, { 1.0f, 1.5f, 0.75f } });
     doc.setNodeName(2, QStringLiteral("Tall box \u00e9"));
     doc.setNodeVisible(3, false);
     doc.setNodeDynamic(1, true);
     auto material = doc.state().materials[1];
-    material.albedo = {0.123f, 0.456f, 0.789f};
+    material.albedo = { 0.123f, 0.456f, 0.789f };
     material.specular = glm::vec3(0.1f);
     material.shininess = 64.0f;
     material.doubleSided = false;
@@ -69,8 +69,8 @@ bool makeEditedCornell(Document& doc)
     LightNode light;
     light.name = QStringLiteral("Sun");
     light.type = LightType::Directional;
-    light.direction = {0.3f, -1.0f, 0.1f};
-    light.color = {1.0f, 0.9f, 0.7f};
+    light.direction = { 0.3f, -1.0f, 0.1f };
+    light.color = { 1.0f, 0.9f, 0.7f };
     light.intensity = 2.5f;
     light.castsShadows = false;
     doc.addLight(light);
@@ -112,7 +112,8 @@ private slots:
         QCOMPARE(root.value("format").toString(), QStringLiteral("vct-studio-project"));
         QCOMPARE(root.value("version").toInt(), 1);
         QCOMPARE(root.value("settings").toObject().value("voxel_res").toString(), QStringLiteral("64"));
-        QCOMPARE(root.value("lights").toArray().last().toObject().value("type").toString(), QStringLiteral("directional"));
+        QCOMPARE(root.value("lights").toArray().last().toObject().value("type").toString(),
+            QStringLiteral("directional"));
     }
 
     void jsonRoundTrip()
@@ -122,7 +123,8 @@ private slots:
         const QByteArray json = ProjectFile::toJson(doc.state(), QDir::tempPath());
         DocumentState state;
         QString error;
-        QVERIFY2(ProjectFile::fromJson(json, QDir::tempPath(), QStringLiteral("memory.vctproj"), &state, &error),
+        QVERIFY2(
+            ProjectFile::fromJson(json, QDir::tempPath(), QStringLiteral("memory.vctproj"), &state, &error),
             qPrintable(error));
         QVERIFY(sameDocument(doc.state(), state));
         state.nodes[0].transform.scale.y = 2.0f;
@@ -136,7 +138,8 @@ private slots:
         Document doc;
         QVERIFY(makeEditedCornell(doc));
         QVERIFY(!doc.state().materials[1].doubleSided);
-        QJsonObject root = QJsonDocument::fromJson(ProjectFile::toJson(doc.state(), QDir::tempPath())).object();
+        QJsonObject root
+            = QJsonDocument::fromJson(ProjectFile::toJson(doc.state(), QDir::tempPath())).object();
         QJsonArray materials = root.value("materials").toArray();
         for (qsizetype i = 0; i < materials.size(); ++i) {
             QJsonObject m = materials[i].toObject();
@@ -147,8 +150,8 @@ private slots:
         root["materials"] = materials;
         DocumentState state;
         QString error;
-        QVERIFY2(ProjectFile::fromJson(QJsonDocument(root).toJson(), QDir::tempPath(), QStringLiteral("old.vctproj"),
-                     &state, &error),
+        QVERIFY2(ProjectFile::fromJson(QJsonDocument(root).toJson(), QDir::tempPath(),
+                     QStringLiteral("old.vctproj"), &state, &error),
             qPrintable(error));
         for (const vct::render::Material& m : state.materials)
             QVERIFY(m.doubleSided);
@@ -157,8 +160,8 @@ private slots:
         wrong["double_sided"] = QStringLiteral("no");
         materials[1] = wrong;
         root["materials"] = materials;
-        QVERIFY(!ProjectFile::fromJson(QJsonDocument(root).toJson(), QDir::tempPath(), QStringLiteral("bad.vctproj"),
-            &state, &error));
+        QVERIFY(!ProjectFile::fromJson(
+            QJsonDocument(root).toJson(), QDir::tempPath(), QStringLiteral("bad.vctproj"), &state, &error));
         QVERIFY2(error.contains(QStringLiteral("materials[1].double_sided")), qPrintable(error));
     }
 
@@ -171,7 +174,8 @@ private slots:
         QString error;
         QVERIFY(doc.newFromScene(QStringLiteral("builtin:cornell"), &error));
         QVERIFY2(doc.importModel(obj, &error), qPrintable(error));
-        doc.setNodeTransform(int(doc.state().nodes.size()) - 1, {{0.0f, 0.5f, 0.0f}, glm::vec3(0.0f), glm::vec3(1.0f)});
+        doc.setNodeTransform(
+            int(doc.state().nodes.size()) - 1, { { 0.0f, 0.5f, 0.0f }, glm::vec3(0.0f), glm::vec3(1.0f) });
         const QString path = dir + QStringLiteral("/scene.vctproj");
         QVERIFY2(doc.saveProject(path, &error), qPrintable(error));
 
@@ -186,7 +190,8 @@ private slots:
         Document reopened;
         QVERIFY2(reopened.openProject(moved + QStringLiteral("/scene.vctproj"), &error), qPrintable(error));
         QCOMPARE(reopened.state().sources.size(), std::size_t(2));
-        QCOMPARE(reopened.state().sources[1].spec, QDir(moved).absoluteFilePath(QStringLiteral("models/wedge.obj")));
+        QCOMPARE(reopened.state().sources[1].spec,
+            QDir(moved).absoluteFilePath(QStringLiteral("models/wedge.obj")));
         QCOMPARE(reopened.state().nodes, doc.state().nodes);
         QCOMPARE(reopened.buildRenderScene().triangleCount(), doc.buildRenderScene().triangleCount());
     }
@@ -216,27 +221,34 @@ private slots:
         };
 
         QTest::newRow("empty") << QByteArray() << QStringLiteral("invalid JSON");
-        QTest::newRow("truncated") << valid.left(valid.size() / 2) << QStringLiteral("invalid JSON at offset");
+        QTest::newRow("truncated") << valid.left(valid.size() / 2)
+                                   << QStringLiteral("invalid JSON at offset");
         QTest::newRow("top-level array") << QByteArray("[1, 2]") << QStringLiteral("JSON object");
         QTest::newRow("other format") << edited([](QJsonObject& o) { o.insert("format", "something-else"); })
                                       << QStringLiteral("not a VCT Studio project");
-        QTest::newRow("newer version") << edited([](QJsonObject& o) { o.insert("version", 7); })
-                                       << QStringLiteral("was saved by a newer VCT Studio (version 7); this one reads version 1");
-        QTest::newRow("version as text") << edited([](QJsonObject& o) { o.insert("version", "1"); })
-                                         << QStringLiteral("'version'");
-        QTest::newRow("nodes not an array") << edited([](QJsonObject& o) { o.insert("nodes", 5); })
-                                            << QStringLiteral("field 'nodes': expected an array, found a number");
-        QTest::newRow("node not an object") << edited([](QJsonObject& o) { o.insert("nodes", QJsonArray{1}); })
-                                            << QStringLiteral("nodes[0]");
-        QTest::newRow("translation of strings") << editNode0("translation", QJsonArray{"a", "b", "c"})
+        QTest::newRow("newer version")
+            << edited([](QJsonObject& o) { o.insert("version", 7); })
+            << QStringLiteral("was saved by a newer VCT Studio (version 7); this one reads version 1");
+        QTest::newRow("version as text")
+            << edited([](QJsonObject& o) { o.insert("version", "1"); }) << QStringLiteral("'version'");
+        QTest::newRow("nodes not an array")
+            << edited([](QJsonObject& o) { o.insert("nodes", 5); })
+            << QStringLiteral("field 'nodes': expected an array, found a number");
+        QTest::newRow("node not an object")
+            << edited([](QJsonObject& o) { o.insert("nodes", QJsonArray { 1 }); })
+            << QStringLiteral("nodes[0]");
+        QTest::newRow("translation of strings") << editNode0("translation", QJsonArray { "a", "b", "c" })
                                                 << QStringLiteral("nodes[0].translation");
-        QTest::newRow("scale of two") << editNode0("scale", QJsonArray{1, 2}) << QStringLiteral("nodes[0].scale");
+        QTest::newRow("scale of two")
+            << editNode0("scale", QJsonArray { 1, 2 }) << QStringLiteral("nodes[0].scale");
         QTest::newRow("visible as number") << editNode0("visible", 1) << QStringLiteral("nodes[0].visible");
-        QTest::newRow("material out of range") << editNode0("material", 5) << QStringLiteral("nodes[0].material");
+        QTest::newRow("material out of range")
+            << editNode0("material", 5) << QStringLiteral("nodes[0].material");
         QTest::newRow("negative source") << editNode0("source", -1) << QStringLiteral("nodes[0].source");
         QTest::newRow("source out of range") << editNode0("source", 1) << QStringLiteral("nodes[0].source");
         QTest::newRow("mesh out of range") << editNode0("mesh", 999) << QStringLiteral("nodes[0].mesh");
-        QTest::newRow("fractional material") << editNode0("material", 1.5) << QStringLiteral("nodes[0].material");
+        QTest::newRow("fractional material")
+            << editNode0("material", 1.5) << QStringLiteral("nodes[0].material");
         QTest::newRow("missing name") << edited([](QJsonObject& o) {
             QJsonArray nodes = o.value("nodes").toArray();
             QJsonObject node = nodes[0].toObject();
@@ -244,8 +256,9 @@ private slots:
             nodes[0] = node;
             o.insert("nodes", nodes);
         }) << QStringLiteral("nodes[0].name");
-        QTest::newRow("duplicate id") << editNode0("id", root.value("nodes").toArray()[1].toObject().value("id"))
-                                      << QStringLiteral("used twice");
+        QTest::newRow("duplicate id")
+            << editNode0("id", root.value("nodes").toArray()[1].toObject().value("id"))
+            << QStringLiteral("used twice");
         QByteArray overflow = valid;
         overflow.replace("\"translation\": [", "\"translation\": [1e999, ");
         // JSON has no infinities; Qt's parser refuses the overflowing literal with its offset.
@@ -280,24 +293,25 @@ private slots:
             c.insert("fov_y_deg", 0);
             o.insert("camera", c);
         }) << QStringLiteral("camera.fov_y_deg");
-        QTest::newRow("next id too small") << edited([](QJsonObject& o) { o.insert("next_id", 2); })
-                                           << QStringLiteral("next_id");
+        QTest::newRow("next id too small")
+            << edited([](QJsonObject& o) { o.insert("next_id", 2); }) << QStringLiteral("next_id");
         QTest::newRow("missing model file") << edited([](QJsonObject& o) {
             QJsonArray sources = o.value("sources").toArray();
-            sources.append(QJsonObject{{"spec", "models/gone_missing.obj"}});
+            sources.append(QJsonObject { { "spec", "models/gone_missing.obj" } });
             o.insert("sources", sources);
         }) << QStringLiteral("gone_missing.obj");
         // A hostile project naming a device outside the project folder: reading it would never end.
         QTest::newRow("model is a device") << edited([](QJsonObject& o) {
             QJsonArray sources = o.value("sources").toArray();
-            sources.append(QJsonObject{{"spec", "/dev/zero"}});
+            sources.append(QJsonObject { { "spec", "/dev/zero" } });
             o.insert("sources", sources);
         }) << QStringLiteral("'/dev/zero' is not a regular file");
         QByteArray badUtf8 = valid;
         badUtf8.replace("Tall box", "Tall \xff\xfe box");
         QTest::newRow("invalid UTF-8") << badUtf8 << QStringLiteral("UTF-8");
         QByteArray nested = valid;
-        nested.replace("\"nodes\": [", "\"nodes\": [" + QByteArray(100000, '[') + QByteArray(100000, ']') + ",");
+        nested.replace(
+            "\"nodes\": [", "\"nodes\": [" + QByteArray(100000, '[') + QByteArray(100000, ']') + ",");
         QTest::newRow("deeply nested arrays") << nested << QStringLiteral("nest deeper");
         QByteArray huge = valid;
         QByteArray zeros;
@@ -346,7 +360,8 @@ private slots:
         const DocumentState before = doc.state();
         QString error;
         QVERIFY(!doc.openProject(dir + QStringLiteral("/nothing_here.vctproj"), &error));
-        QVERIFY2(error.contains(QStringLiteral("nothing_here.vctproj")) && error.contains(QStringLiteral("not found")),
+        QVERIFY2(error.contains(QStringLiteral("nothing_here.vctproj"))
+                && error.contains(QStringLiteral("not found")),
             qPrintable(error));
         QVERIFY(!doc.openProject(dir, &error));
         QVERIFY2(error.contains(QStringLiteral("oversized")), qPrintable(error));
@@ -372,7 +387,8 @@ private slots:
         const QString path = testDir(QStringLiteral("nofolder")) + QStringLiteral("/not/there/x.vctproj");
         QString error;
         QVERIFY(!doc.saveProject(path, &error));
-        QVERIFY2(error.contains(QStringLiteral("x.vctproj")) && error.contains(QStringLiteral("does not exist")),
+        QVERIFY2(
+            error.contains(QStringLiteral("x.vctproj")) && error.contains(QStringLiteral("does not exist")),
             qPrintable(error));
         QVERIFY(doc.isModified());
         QVERIFY(doc.filePath().isEmpty());
@@ -413,11 +429,13 @@ private slots:
                 QSKIP("setrlimit(RLIMIT_FSIZE) is not available");
             QVERIFY(!doc.saveProject(path, &error));
         }
-        QVERIFY2(error.contains(QStringLiteral("kept.vctproj")) && error.contains(QStringLiteral("cannot save")),
+        QVERIFY2(
+            error.contains(QStringLiteral("kept.vctproj")) && error.contains(QStringLiteral("cannot save")),
             qPrintable(error));
         QCOMPARE(readFile(path), original);
         QVERIFY(doc.isModified());
-        QCOMPARE(QDir(dir).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("kept.vctproj")});
+        QCOMPARE(
+            QDir(dir).entryList(QDir::Files | QDir::Hidden), QStringList { QStringLiteral("kept.vctproj") });
 
         QVERIFY2(doc.saveProject(path, &error), qPrintable(error));
         QVERIFY(readFile(path) != original);

@@ -20,7 +20,7 @@ void AddLightCommand::redo()
     DocumentState& state = m_document->mutableState();
     state.lights.push_back(m_light);
     state.nextId = m_nextIdBefore + 1;
-    m_document->notify({ChangeEvent::Kind::Lights, int(state.lights.size()) - 1});
+    m_document->notify({ ChangeEvent::Kind::Lights, int(state.lights.size()) - 1 });
 }
 
 void AddLightCommand::undo()
@@ -30,7 +30,7 @@ void AddLightCommand::undo()
     if (index >= 0)
         state.lights.erase(state.lights.begin() + index);
     state.nextId = m_nextIdBefore;
-    m_document->notify({ChangeEvent::Kind::Lights, index});
+    m_document->notify({ ChangeEvent::Kind::Lights, index });
 }
 
 } // namespace vct::doc

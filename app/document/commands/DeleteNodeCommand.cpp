@@ -19,7 +19,7 @@ void DeleteNodeCommand::redo()
     m_selectedBefore = m_document->selectedNodeId();
     DocumentState& state = m_document->mutableState();
     state.nodes.erase(state.nodes.begin() + m_index);
-    m_document->notify({ChangeEvent::Kind::Structure, m_index});
+    m_document->notify({ ChangeEvent::Kind::Structure, m_index });
     // selectNodeById gives -1 for the deleted node itself and the shifted index for any other.
     m_document->selectNodeById(m_selectedBefore);
 }
@@ -28,7 +28,7 @@ void DeleteNodeCommand::undo()
 {
     DocumentState& state = m_document->mutableState();
     state.nodes.insert(state.nodes.begin() + m_index, m_node);
-    m_document->notify({ChangeEvent::Kind::Structure, m_index});
+    m_document->notify({ ChangeEvent::Kind::Structure, m_index });
     m_document->selectNodeById(m_selectedBefore);
 }
 

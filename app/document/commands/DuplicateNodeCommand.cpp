@@ -24,7 +24,7 @@ void DuplicateNodeCommand::redo()
     DocumentState& state = m_document->mutableState();
     state.nodes.insert(state.nodes.begin() + m_index, m_copy);
     state.nextId = m_nextIdBefore + 1;
-    m_document->notify({ChangeEvent::Kind::Structure, m_index});
+    m_document->notify({ ChangeEvent::Kind::Structure, m_index });
     m_document->setSelectedNode(m_index);
 }
 
@@ -33,7 +33,7 @@ void DuplicateNodeCommand::undo()
     DocumentState& state = m_document->mutableState();
     state.nodes.erase(state.nodes.begin() + m_index);
     state.nextId = m_nextIdBefore;
-    m_document->notify({ChangeEvent::Kind::Structure, m_index});
+    m_document->notify({ ChangeEvent::Kind::Structure, m_index });
     m_document->selectNodeById(m_selectedBefore);
 }
 

@@ -21,7 +21,7 @@ public:
 
 private:
     Document* m_document;
-    int m_index;          ///< Where the copy goes.
+    int m_index; ///< Where the copy goes.
     SceneNode m_copy;
     quint64 m_nextIdBefore;
     quint64 m_selectedBefore = 0;

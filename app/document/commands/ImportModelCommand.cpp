@@ -20,7 +20,8 @@ ImportModelCommand::ImportModelCommand(Document* document, const SceneSource& so
     , m_nextIdBefore(document->state().nextId)
     , m_nextIdAfter(nextIdAfter)
 {
-    setText(QCoreApplication::translate("ImportModelCommand", "Import %1").arg(QFileInfo(source.spec).fileName()));
+    setText(QCoreApplication::translate("ImportModelCommand", "Import %1")
+                .arg(QFileInfo(source.spec).fileName()));
 }
 
 void ImportModelCommand::redo()
@@ -32,7 +33,7 @@ void ImportModelCommand::redo()
     state.nodes.insert(state.nodes.end(), m_nodes.begin(), m_nodes.end());
     state.lights.insert(state.lights.end(), m_lights.begin(), m_lights.end());
     state.nextId = m_nextIdAfter;
-    m_document->notify({ChangeEvent::Kind::Reset, -1});
+    m_document->notify({ ChangeEvent::Kind::Reset, -1 });
 }
 
 void ImportModelCommand::undo()
@@ -44,7 +45,7 @@ void ImportModelCommand::undo()
     state.nodes.resize(state.nodes.size() - m_nodes.size());
     state.lights.resize(state.lights.size() - m_lights.size());
     state.nextId = m_nextIdBefore;
-    m_document->notify({ChangeEvent::Kind::Reset, -1});
+    m_document->notify({ ChangeEvent::Kind::Reset, -1 });
     m_document->selectNodeById(m_selectedBefore);
 }
 

@@ -18,14 +18,14 @@ void RemoveLightCommand::redo()
 {
     DocumentState& state = m_document->mutableState();
     state.lights.erase(state.lights.begin() + m_index);
-    m_document->notify({ChangeEvent::Kind::Lights, m_index});
+    m_document->notify({ ChangeEvent::Kind::Lights, m_index });
 }
 
 void RemoveLightCommand::undo()
 {
     DocumentState& state = m_document->mutableState();
     state.lights.insert(state.lights.begin() + m_index, m_light);
-    m_document->notify({ChangeEvent::Kind::Lights, m_index});
+    m_document->notify({ ChangeEvent::Kind::Lights, m_index });
 }
 
 } // namespace vct::doc

@@ -48,7 +48,7 @@ void SetLightCommand::apply(const LightNode& light)
     if (index < 0)
         return;
     m_document->mutableState().lights[std::size_t(index)] = light;
-    m_document->notify({ChangeEvent::Kind::Lights, index});
+    m_document->notify({ ChangeEvent::Kind::Lights, index });
 }
 
 } // namespace vct::doc

@@ -47,7 +47,7 @@ void SetMaterialCommand::apply(const render::Material& material)
     // Materials are only ever appended or removed from the end (import and its undo), and the undo stack
     // replays in order, so the index still names the same material here.
     m_document->mutableState().materials[std::size_t(m_index)] = material;
-    m_document->notify({ChangeEvent::Kind::Material, m_index});
+    m_document->notify({ ChangeEvent::Kind::Material, m_index });
 }
 
 } // namespace vct::doc

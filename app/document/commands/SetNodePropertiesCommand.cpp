@@ -32,10 +32,11 @@ SetNodePropertiesCommand::SetNodePropertiesCommand(Document* document, int node,
         setText(tr("Edit %1").arg(name));
 }
 
-SetNodePropertiesCommand::Properties SetNodePropertiesCommand::propertiesOf(const Document& document, int node)
+SetNodePropertiesCommand::Properties SetNodePropertiesCommand::propertiesOf(
+    const Document& document, int node)
 {
     const SceneNode& n = document.state().nodes.at(std::size_t(node));
-    return {n.name, n.visible, n.dynamic};
+    return { n.name, n.visible, n.dynamic };
 }
 
 void SetNodePropertiesCommand::redo()
@@ -60,9 +61,9 @@ void SetNodePropertiesCommand::apply(const Properties& properties)
     node.visible = properties.visible;
     node.dynamic = properties.dynamic;
     if (visibilityChanged)
-        m_document->notify({ChangeEvent::Kind::Structure, index});
+        m_document->notify({ ChangeEvent::Kind::Structure, index });
     if (propertyChanged)
-        m_document->notify({ChangeEvent::Kind::NodeProperty, index});
+        m_document->notify({ ChangeEvent::Kind::NodeProperty, index });
 }
 
 } // namespace vct::doc

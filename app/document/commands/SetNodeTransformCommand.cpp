@@ -49,7 +49,7 @@ void SetNodeTransformCommand::apply(const NodeTransform& transform)
     if (index < 0)
         return;
     m_document->mutableState().nodes[std::size_t(index)].transform = transform;
-    m_document->notify({ChangeEvent::Kind::NodeTransform, index});
+    m_document->notify({ ChangeEvent::Kind::NodeTransform, index });
 }
 
 } // namespace vct::doc

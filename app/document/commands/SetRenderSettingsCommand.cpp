@@ -18,7 +18,8 @@ SetRenderSettingsCommand::SetRenderSettingsCommand(Document* document, const ren
             : QCoreApplication::translate("SetRenderSettingsCommand", "Change render settings"));
 }
 
-QStringList SetRenderSettingsCommand::changedKeys(const render::RenderSettings& a, const render::RenderSettings& b)
+QStringList SetRenderSettingsCommand::changedKeys(
+    const render::RenderSettings& a, const render::RenderSettings& b)
 {
     const auto rowsA = a.describe();
     const auto rowsB = b.describe();
@@ -58,7 +59,7 @@ bool SetRenderSettingsCommand::mergeWith(const QUndoCommand* other)
 void SetRenderSettingsCommand::apply(const render::RenderSettings& settings)
 {
     m_document->mutableState().settings = settings;
-    m_document->notify({ChangeEvent::Kind::Settings, -1});
+    m_document->notify({ ChangeEvent::Kind::Settings, -1 });
 }
 
 } // namespace vct::doc
