@@ -67,6 +67,17 @@ Scene rebased(const Scene& scene)
     return local;
 }
 
+/** The scene's bounds in that frame, without copying the scene again. */
+Aabb rebasedBounds(const Scene& scene)
+{
+    const Aabb bounds = scene.bounds();
+    if (bounds.isEmpty())
+        return bounds;
+    const glm::vec3 origin = localOrigin(scene);
+    const float scale = localScale(scene);
+    return Aabb { (bounds.min - origin) * scale, (bounds.max - origin) * scale };
+}
+
 Camera rebased(const Camera& camera, const Scene& scene)
 {
     const glm::vec3 origin = localOrigin(scene);
@@ -86,7 +97,7 @@ ReferenceRenderer::ReferenceRenderer(
     , m_width(std::max(1, width))
     , m_height(std::max(1, height))
     , m_tracer(rebased(scene), settings)
-    , m_cameraRays(rebased(camera, scene), m_width, m_height, rebased(scene).bounds())
+    , m_cameraRays(rebased(camera, scene), m_width, m_height, rebasedBounds(scene))
     , m_sum(std::size_t(m_width) * std::size_t(m_height), glm::dvec3(0.0))
 {
 }
