@@ -75,6 +75,9 @@ struct VoxelVolume {
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0; ///< Grows each time level 0 of radiance is rewritten.
     std::uint64_t bouncedVersion = 0; ///< Grows each time the bounce iteration rewrites `bounced`.
+    /// The bouncedVersion levels 1..N of `bounced` were box-filtered for, when its cones read directional
+    /// chains (as boxMipsVersion is for `radiance`).
+    std::uint64_t bouncedBoxMipsVersion = 0;
     BounceProgress bounceProgress;
     /// The radianceVersion levels 1..N of `radiance` were filtered for. With anisotropic mips cones read only
     /// level 0 and the directional chains, so the box levels are filtered only when something looks at them

@@ -53,14 +53,24 @@ struct Renderer::State {
 
 namespace {
 
-// Levels 1..N of the isotropic radiance volume, which cones do not read when the mips are anisotropic.
+// Levels 1..N of the isotropic radiance volumes (first-bounce and bounced), which cones do not read when the
+// mips are anisotropic: filtered only when something looks at them.
 void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
 {
-    if (!v.radiance || v.boxMipsVersion == v.radianceVersion)
+    const bool radianceStale = v.radiance && v.boxMipsVersion != v.radianceVersion;
+    const bool bouncedStale
+        = v.bounced && v.bouncedDirectional && v.bouncedBoxMipsVersion != v.bouncedVersion;
+    if (!radianceStale && !bouncedStale)
         return;
     builder.listCells(shaders, v.frame.resolution, v.radiance.levels(), v.occupiedVoxels(dynamicMeshes));
-    builder.buildBox(shaders, v.radiance);
-    v.boxMipsVersion = v.radianceVersion;
+    if (radianceStale) {
+        builder.buildBox(shaders, v.radiance);
+        v.boxMipsVersion = v.radianceVersion;
+    }
+    if (bouncedStale) {
+        builder.buildBox(shaders, v.bounced);
+        v.bouncedBoxMipsVersion = v.bouncedVersion;
+    }
 }
 
 std::unique_ptr<Pipeline> makePipeline()

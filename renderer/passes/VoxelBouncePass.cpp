@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace vct::render {
 
@@ -65,10 +66,10 @@ void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
             t->setFilter(GL_NEAREST, GL_NEAREST);
         }
     if (!m_residualSums)
-        m_residualSums = gl::Texture::create2D(GL_R32F, 2, 1);
+        m_residualSums = gl::Texture::create2D(GL_R32F, 2 * kResidualSlots, 1);
 }
 
-void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compare)
+void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compare, int slot)
 {
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips && v.directional;
@@ -86,7 +87,6 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
 
     // Reinject: L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    glClearTexImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, zero);
     if (!compare) // stale voxels of an earlier occupancy must not stay lit
         glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -97,6 +97,7 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
     m_reinject.set("uCells", cells);
     m_reinject.set("uCellSize", v.frame.extent / float(cells));
     m_reinject.set("uCompare", compare ? 1 : 0);
+    m_reinject.set("uResidualSlot", slot);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.radiance.bindUnit(2);
@@ -116,11 +117,17 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
         m_builder.buildBox(frame.shaders, v.bounced);
 }
 
-double VoxelBouncePass::readResidual()
+std::vector<double> VoxelBouncePass::readResiduals(int count)
 {
-    float sums[2] = { 0.0f, 0.0f };
-    glGetTextureImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, GLsizei(sizeof sums), sums);
-    return sums[1] > 0.0f ? double(sums[0]) / double(sums[1]) : 0.0;
+    std::vector<float> sums(std::size_t(2 * kResidualSlots));
+    glGetTextureImage(
+        m_residualSums.id(), 0, GL_RED, GL_FLOAT, GLsizei(sums.size() * sizeof(float)), sums.data());
+    std::vector<double> residuals;
+    for (int k = 0; k < count; ++k) {
+        const float change = sums[std::size_t(2 * k)], total = sums[std::size_t(2 * k + 1)];
+        residuals.push_back(total > 0.0f ? double(change) / double(total) : 0.0);
+    }
+    return residuals;
 }
 
 void VoxelBouncePass::execute(FrameContext& frame)
@@ -157,29 +164,44 @@ void VoxelBouncePass::execute(FrameContext& frame)
     }
     const int limit = iterationLimit(frame);
     const int budget = progressive ? frame.bounceIterationsPerFrame : limit;
-    for (int step = 0; step < budget && !m_done; ++step) {
-        // The first iteration of a cold start gathers from the first-bounce volume; its reinjection then
-        // overwrites every occupied voxel, and the clear before it every other.
-        iterate(frame, warm, warm);
-        warm = true;
-        ++m_iterations;
-        if (converging) {
-            m_previousResidual = m_residual;
-            m_residual = readResidual();
-            // The change shrinks geometrically (by the scene's average albedo times what a gather captures):
-            // the change still to come is about residual * q / (1 - q).
-            const double q = m_iterations >= 3 && m_previousResidual > 0.0
-                ? std::min(m_residual / m_previousResidual, 0.99)
-                : 0.5;
-            const double tolerance = double(frame.settings.bounceTolerance);
-            m_done = m_iterations >= 2 && m_residual < tolerance && m_residual * q / (1.0 - q) < tolerance;
+    // Iterations run in batches with one readback of their residuals after each: a frame of the interactive
+    // view runs its whole budget and then waits once, instead of stalling after every iteration; a frame that
+    // converges fully decides after each one, so that it stops where the change is small enough.
+    for (int ran = 0; ran < budget && !m_done;) {
+        const int batch = std::min(
+            { converging && progressive ? kResidualSlots : 1, budget - ran, limit - m_iterations });
+        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        glClearTexImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, zero);
+        for (int slot = 0; slot < batch; ++slot) {
+            // The first iteration of a cold start gathers from the first-bounce volume; its reinjection then
+            // overwrites every occupied voxel, and the clear before it every other.
+            iterate(frame, warm, warm, slot);
+            warm = true;
         }
-        m_done = m_done || m_iterations >= limit;
+        ran += batch;
+        const std::vector<double> residuals
+            = converging ? readResiduals(batch) : std::vector<double>(std::size_t(batch), 0.0);
+        for (const double residual : residuals) {
+            ++m_iterations;
+            if (converging) {
+                m_previousResidual = m_residual;
+                m_residual = residual;
+                // The change shrinks geometrically (by the scene's average albedo times what a gather
+                // captures): the change still to come is about residual * q / (1 - q).
+                const double q = m_iterations >= 3 && m_previousResidual > 0.0
+                    ? std::min(m_residual / m_previousResidual, 0.99)
+                    : 0.5;
+                const double tolerance = double(frame.settings.bounceTolerance);
+                m_done = m_done
+                    || (m_iterations >= 2 && m_residual < tolerance
+                        && m_residual * q / (1.0 - q) < tolerance);
+            }
+            m_done = m_done || m_iterations >= limit;
+        }
     }
-    if (frame.settings.anisotropicMips && v.directional)
-        m_builder.buildBox(
-            frame.shaders, v.bounced); // for the inspector and the NaN check; cones read the chains
-    else
+    // With anisotropic mips cones read the directional chains only; the box levels are filtered when
+    // something looks at them (Renderer's ensureBoxMips), as for the first-bounce volume.
+    if (!(frame.settings.anisotropicMips && v.directional))
         v.bouncedDirectional = gl::Texture();
     v.bounceProgress = { m_iterations, m_residual, m_done };
     m_radianceVersion = v.radianceVersion;

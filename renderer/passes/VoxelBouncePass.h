@@ -7,6 +7,7 @@
 #include "passes/VoxelMipBuilder.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace vct::render {
 
@@ -49,17 +50,20 @@ private:
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
     void allocate(VoxelVolume& v, int cells);
-    /** One iteration: gather the cells from @p fromBounced (else the first-bounce volume), reinject, filter.
+    /**
+     * One iteration: gather the cells from @p fromBounced (else the first-bounce volume), reinject, filter;
+     * its residual's sums go to texel pair @p slot of m_residualSums.
      */
-    void iterate(FrameContext& frame, bool fromBounced, bool compare);
-    /** The residual of the last iteration: sum of |change| over sum of radiance (reads back two floats). */
-    double readResidual();
+    void iterate(FrameContext& frame, bool fromBounced, bool compare, int slot);
+    /** The residuals of the first @p count slots: sum of |change| over sum of radiance (one readback). */
+    std::vector<double> readResiduals(int count);
+    static constexpr int kResidualSlots = 8; ///< iterations whose residuals one readback collects
 
     gl::Program m_gather[2]; ///< irradiance/GatherCells.comp; [1] anisotropic
     gl::Program m_reinject;
     OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
-    gl::Texture m_residualSums; ///< r32f, 2 x 1: sum of |change| and of radiance over the voxels
+    gl::Texture m_residualSums; ///< r32f, 2 x kResidualSlots: per iteration, sum of |change| and of radiance
     std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for
     std::uint64_t m_listedMaterials = 0; ///< the voxels m_cells and the mip lists were made for
     SolveKey m_key;

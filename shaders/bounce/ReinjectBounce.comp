@@ -14,7 +14,9 @@ layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
 layout(binding = 2) uniform sampler3D uDirect; // first-bounce radiance (direct light and emission), premultiplied
 layout(rgba16f, binding = 0) uniform image3D uBounced; // the previous iterate in, the new one out
-layout(r32f, binding = 1) uniform image2D uResidual; // texel 0: sum of |change|, texel 1: sum of radiance
+// Texel 2 * uResidualSlot: sum of |change|; the next: sum of radiance (one pair per iteration of a batch).
+layout(r32f, binding = 1) uniform image2D uResidual;
+uniform int uResidualSlot;
 
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
@@ -81,7 +83,7 @@ void main()
         barrier();
     }
     if (gl_LocalInvocationIndex == 0u) {
-        imageAtomicAdd(uResidual, ivec2(0, 0), sChange[0]);
-        imageAtomicAdd(uResidual, ivec2(1, 0), sTotal[0]);
+        imageAtomicAdd(uResidual, ivec2(2 * uResidualSlot, 0), sChange[0]);
+        imageAtomicAdd(uResidual, ivec2(2 * uResidualSlot + 1, 0), sTotal[0]);
     }
 }
