@@ -37,56 +37,54 @@ bool isFinite(const glm::vec3& v)
  * through its corners (its walls 15 ulps-steps of 1.5e-5 apart). A corner and the centre of similar magnitude
  * subtract exactly.
  */
-glm::vec3 localOrigin(const Scene& scene)
-{
-    const Aabb bounds = scene.bounds();
-    return bounds.isEmpty() || !isFinite(bounds.center()) ? glm::vec3(0.0f) : bounds.center();
-}
+struct LocalFrame {
+    glm::vec3 origin { 0.0f };
+    float scale = 1.0f;
+    Aabb bounds; ///< the scene's bounds in the frame
 
-float localScale(const Scene& scene)
-{
-    const float diagonal = glm::length(scene.bounds().size());
-    return diagonal > 0.0f && std::isfinite(diagonal) ? 1.0f / diagonal : 1.0f;
-}
-
-Scene rebased(const Scene& scene)
-{
-    const glm::vec3 origin = localOrigin(scene);
-    Scene local = scene;
-    const float scale = localScale(scene);
-    // The translation moves first: a far-out vertex of an untransformed model then meets its offset in one
-    // addition of similar magnitudes, which is exact; the uniform scale keeps every normal's direction.
-    for (Mesh& mesh : local.meshes) {
-        mesh.transform[3] -= glm::vec4(origin, 0.0f);
-        mesh.transform = glm::mat4(glm::mat3(scale)) * mesh.transform;
+    explicit LocalFrame(const Scene& scene)
+    {
+        const Aabb world = scene.bounds();
+        if (world.isEmpty())
+            return;
+        const float diagonal = glm::length(world.size());
+        origin = isFinite(world.center()) ? world.center() : glm::vec3(0.0f);
+        scale = diagonal > 0.0f && std::isfinite(diagonal) ? 1.0f / diagonal : 1.0f;
+        bounds = Aabb { toLocal(world.min), toLocal(world.max) };
     }
-    for (PointLight& light : local.pointLights) {
-        light.position = (light.position - origin) * scale;
-        light.intensity *= scale * scale;
+    glm::vec3 toLocal(const glm::vec3& p) const { return (p - origin) * scale; }
+
+    Scene toLocal(const Scene& scene) const
+    {
+        Scene local = scene;
+        // The translation moves first: a far-out vertex of an untransformed model then meets its offset in
+        // one addition of similar magnitudes, which is exact; the uniform scale keeps every normal's
+        // direction.
+        for (Mesh& mesh : local.meshes) {
+            mesh.transform[3] -= glm::vec4(origin, 0.0f);
+            mesh.transform = glm::mat4(glm::mat3(scale)) * mesh.transform;
+        }
+        for (PointLight& light : local.pointLights) {
+            light.position = toLocal(light.position);
+            light.intensity *= scale * scale;
+        }
+        return local;
     }
-    return local;
-}
 
-/** The scene's bounds in that frame, without copying the scene again. */
-Aabb rebasedBounds(const Scene& scene)
-{
-    const Aabb bounds = scene.bounds();
-    if (bounds.isEmpty())
-        return bounds;
-    const glm::vec3 origin = localOrigin(scene);
-    const float scale = localScale(scene);
-    return Aabb { (bounds.min - origin) * scale, (bounds.max - origin) * scale };
-}
+    Camera toLocal(const Camera& camera) const
+    {
+        Camera local = camera;
+        local.position = toLocal(camera.position);
+        local.lookAt = toLocal(camera.lookAt);
+        local.nearPlane *= scale;
+        return local;
+    }
+};
 
-Camera rebased(const Camera& camera, const Scene& scene)
+CameraRays localRays(const Scene& scene, const Camera& camera, int width, int height)
 {
-    const glm::vec3 origin = localOrigin(scene);
-    const float scale = localScale(scene);
-    Camera local = camera;
-    local.position = (local.position - origin) * scale;
-    local.lookAt = (local.lookAt - origin) * scale;
-    local.nearPlane *= scale;
-    return local;
+    const LocalFrame frame(scene);
+    return CameraRays(frame.toLocal(camera), width, height, frame.bounds);
 }
 
 } // namespace
@@ -96,8 +94,8 @@ ReferenceRenderer::ReferenceRenderer(
     : m_settings(settings)
     , m_width(std::max(1, width))
     , m_height(std::max(1, height))
-    , m_tracer(rebased(scene), settings)
-    , m_cameraRays(rebased(camera, scene), m_width, m_height, rebasedBounds(scene))
+    , m_tracer(LocalFrame(scene).toLocal(scene), settings)
+    , m_cameraRays(localRays(scene, camera, m_width, m_height))
     , m_sum(std::size_t(m_width) * std::size_t(m_height), glm::dvec3(0.0))
 {
 }
