@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <initializer_list>
 
 namespace vct::ui {
 
@@ -24,7 +25,73 @@ namespace {
 
 QString intensityUnit(doc::LightType type)
 {
-    return type == doc::LightType::Directional ? QStringLiteral(" W/m²") : QStringLiteral(" W/sr");
+    switch (type) {
+    case doc::LightType::Directional:
+        return QStringLiteral(" W/m²");
+    case doc::LightType::Rect:
+    case doc::LightType::Disk:
+        return QStringLiteral(" W/(m² sr)");
+    case doc::LightType::Point:
+    case doc::LightType::Spot:
+        break;
+    }
+    return QStringLiteral(" W/sr");
+}
+
+QString directionTip(doc::LightType type)
+{
+    switch (type) {
+    case doc::LightType::Spot:
+        return LightDock::tr("The spot's axis (need not be unit length; zero is not allowed)");
+    case doc::LightType::Rect:
+    case doc::LightType::Disk:
+        return LightDock::tr(
+            "The way the front face looks; only the front emits (need not be unit length; zero "
+            "is not allowed)");
+    case doc::LightType::Point:
+    case doc::LightType::Directional:
+        break;
+    }
+    return LightDock::tr("The way the light travels (need not be unit length; zero is not allowed)");
+}
+
+/** A length in metres, more than zero: a surface light without area emits nothing. */
+QDoubleSpinBox* makeLengthSpin(const QString& objectName, const QString& tip)
+{
+    auto* spin = new QDoubleSpinBox;
+    spin->setObjectName(objectName);
+    spin->setRange(0.001, 1.0e3);
+    spin->setDecimals(3);
+    spin->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    spin->setSuffix(QStringLiteral(" m"));
+    spin->setToolTip(tip);
+    return spin;
+}
+
+/**
+ * A new rect or disk light: a quarter of the scene's narrower horizontal extent across (at most 1 m), above
+ * the middle of the scene and just under its top, facing down. Under the top, as a ceiling light, because a
+ * closed room's ceiling would shadow a light above it.
+ */
+doc::LightNode newSurfaceLight(doc::LightType type, const render::Aabb& bounds, const glm::vec3& lookAt)
+{
+    doc::LightNode light;
+    light.type = type;
+    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    light.intensity = 10.0f;
+    if (bounds.isEmpty()) {
+        light.position = lookAt + glm::vec3(0.0f, 1.0f, 0.0f);
+        return light;
+    }
+    const glm::vec3 extent = bounds.size();
+    const float horizontal = std::min(extent.x, extent.z);
+    const float across = horizontal > 0.0f ? horizontal : std::max({ extent.x, extent.y, extent.z });
+    const float side = across > 0.0f ? std::min(1.0f, 0.25f * across) : 1.0f;
+    light.areaWidth = side;
+    light.areaHeight = side;
+    const glm::vec3 centre = bounds.center();
+    light.position = { centre.x, bounds.max.y - std::min(1.0f, 0.05f * extent.y), centre.z };
+    return light;
 }
 
 void setSpinValue(QDoubleSpinBox* spin, double value)
@@ -85,11 +152,24 @@ LightDock::LightDock(QWidget* parent)
     m_remove = new QPushButton(tr("Remove"));
     m_remove->setObjectName(QStringLiteral("removeLightButton"));
     m_remove->setToolTip(tr("Remove the selected light (one undo step)"));
+    m_addRect = new QPushButton(tr("Add rect"));
+    m_addRect->setObjectName(QStringLiteral("addRectLightButton"));
+    m_addRect->setToolTip(
+        tr("Add a rectangular area light under the scene's top, facing down (one undo step)"));
+    m_addDisk = new QPushButton(tr("Add disk"));
+    m_addDisk->setObjectName(QStringLiteral("addDiskLightButton"));
+    m_addDisk->setToolTip(tr("Add a disk area light under the scene's top, facing down (one undo step)"));
     auto* buttons = new QHBoxLayout;
     buttons->setContentsMargins(0, 0, 0, 0);
     buttons->addWidget(m_addPoint);
     buttons->addWidget(m_addDirectional);
     buttons->addWidget(m_remove);
+    // A second row: five buttons in one would widen the dock.
+    auto* areaButtons = new QHBoxLayout;
+    areaButtons->setContentsMargins(0, 0, 0, 0);
+    areaButtons->addWidget(m_addRect);
+    areaButtons->addWidget(m_addDisk);
+    areaButtons->addStretch();
 
     m_name = new QLineEdit;
     m_name->setObjectName(QStringLiteral("lightName"));
@@ -98,11 +178,15 @@ LightDock::LightDock(QWidget* parent)
     m_type->addItem(tr("Point"), int(doc::LightType::Point));
     m_type->addItem(tr("Directional"), int(doc::LightType::Directional));
     m_type->addItem(tr("Spot"), int(doc::LightType::Spot));
-    m_type->setToolTip(
-        tr("Point: radiates from a position (intensity in W/sr).\n"
-           "Directional: parallel rays from infinitely far, like the sun (irradiance in W/m²).\n"
-           "Spot: a point light sending its intensity (W/sr, on the axis) into a cone, full within the inner "
-           "angle and fading to none at the outer one."));
+    m_type->addItem(tr("Rect"), int(doc::LightType::Rect));
+    m_type->addItem(tr("Disk"), int(doc::LightType::Disk));
+    m_type->setToolTip(tr(
+        "Point: radiates from a position (intensity in W/sr).\n"
+        "Directional: parallel rays from infinitely far, like the sun (irradiance in W/m²).\n"
+        "Spot: a point light sending its intensity (W/sr, on the axis) into a cone, full within the inner "
+        "angle and fading to none at the outer one.\n"
+        "Rect, Disk: an area light emitting a radiance (W/(m² sr)) from its front face, with soft shadows; "
+        "the camera does not see it."));
     m_spotRow = new QWidget;
     auto* spotLayout = new QHBoxLayout(m_spotRow);
     spotLayout->setContentsMargins(0, 0, 0, 0);
@@ -117,6 +201,17 @@ LightDock::LightDock(QWidget* parent)
     m_spotOuter->setObjectName(QStringLiteral("spotOuter"));
     m_spotInner->setToolTip(tr("Inner angle from the axis: full intensity within it"));
     m_spotOuter->setToolTip(tr("Outer angle from the axis: no light beyond it (at most 90°)"));
+    m_areaWidth = makeLengthSpin(
+        QStringLiteral("areaWidth"), tr("Rects: the width in metres; disks: the diameter in metres"));
+    m_areaHeight = makeLengthSpin(QStringLiteral("areaHeight"), tr("The rect's height in metres"));
+    m_areaRotation = new QDoubleSpinBox;
+    m_areaRotation->setObjectName(QStringLiteral("areaRotation"));
+    m_areaRotation->setRange(-360.0, 360.0);
+    m_areaRotation->setDecimals(1);
+    m_areaRotation->setSuffix(QStringLiteral("°"));
+    m_areaRotation->setToolTip(
+        tr("Turns the rect about its direction; at 0° its width runs along the horizontal axis across the "
+           "direction (world X for a light facing straight up or down)"));
     m_positionRow = makeVectorRow(m_position, -1.0e4, 1.0e4, QStringLiteral(" m"), tr("Position in metres"));
     m_directionRow = makeVectorRow(m_direction, -1.0e3, 1.0e3, QString(),
         tr("The way the light travels (need not be unit length; zero is not allowed)"));
@@ -129,7 +224,8 @@ LightDock::LightDock(QWidget* parent)
     m_intensity->setDecimals(3);
     m_intensity->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
     m_intensity->setToolTip(tr("Emitted per channel = colour × intensity: radiant intensity (W/sr) for point "
-                               "lights, irradiance on a facing surface (W/m²) for directional lights"));
+                               "and spot lights, irradiance on a facing surface (W/m²) for directional "
+                               "lights, radiance of the front face (W/(m² sr)) for rect and disk lights"));
     m_shadows = new QCheckBox(tr("Casts shadows"));
     m_shadows->setObjectName(QStringLiteral("lightShadows"));
 
@@ -145,20 +241,30 @@ LightDock::LightDock(QWidget* parent)
     form->addRow(m_directionLabel, m_directionRow);
     m_spotLabel = new QLabel(tr("Cone"));
     form->addRow(m_spotLabel, m_spotRow);
+    m_areaWidthLabel = new QLabel(tr("Width"));
+    form->addRow(m_areaWidthLabel, m_areaWidth);
+    m_areaHeightLabel = new QLabel(tr("Height"));
+    form->addRow(m_areaHeightLabel, m_areaHeight);
+    m_areaRotationLabel = new QLabel(tr("Rotation"));
+    form->addRow(m_areaRotationLabel, m_areaRotation);
     form->addRow(tr("Colour"), m_color);
-    form->addRow(tr("Intensity"), m_intensity);
+    m_intensityLabel = new QLabel(tr("Intensity"));
+    form->addRow(m_intensityLabel, m_intensity);
     form->addRow(QString(), m_shadows);
 
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_list);
     layout->addLayout(buttons);
+    layout->addLayout(areaButtons);
     layout->addWidget(m_editors);
     layout->addStretch();
     setWidget(body);
 
     connect(m_addPoint, &QPushButton::clicked, this, &LightDock::addPointLight);
     connect(m_addDirectional, &QPushButton::clicked, this, &LightDock::addDirectionalLight);
+    connect(m_addRect, &QPushButton::clicked, this, &LightDock::addRectLight);
+    connect(m_addDisk, &QPushButton::clicked, this, &LightDock::addDiskLight);
     connect(m_remove, &QPushButton::clicked, this, &LightDock::removeCurrentLight);
     connect(m_model, &QAbstractItemModel::modelReset, this, &LightDock::attachList);
     connect(m_list->selectionModel(), &QItemSelectionModel::currentChanged, this, &LightDock::loadLight);
@@ -172,7 +278,7 @@ LightDock::LightDock(QWidget* parent)
             return;
         const auto type = doc::LightType(m_type->itemData(row).toInt());
         applyEdit([&](doc::LightNode& l) { l.type = type; });
-        loadLight(); // The position/direction rows and the intensity unit swap.
+        loadLight(); // The rows shown and the intensity's name and unit follow the type.
     });
     for (std::size_t i = 0; i < 3; ++i) {
         connect(m_position[i], &QDoubleSpinBox::valueChanged, this,
@@ -200,6 +306,12 @@ LightDock::LightDock(QWidget* parent)
             l.spotInnerDeg = std::min(l.spotInnerDeg, l.spotOuterDeg);
         });
     });
+    connect(m_areaWidth, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaWidth = float(v); }); });
+    connect(m_areaHeight, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaHeight = float(v); }); });
+    connect(m_areaRotation, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaRotationDeg = float(v); }); });
     connect(m_color, &ColorButton::colorChanged, this,
         [this](const glm::vec3& c) { applyEdit([&](doc::LightNode& l) { l.color = c; }); });
     connect(m_intensity, &QDoubleSpinBox::valueChanged, this,
@@ -236,28 +348,41 @@ void LightDock::setCurrentLight(int index)
 
 void LightDock::addPointLight()
 {
-    addLight(true);
+    addLight(doc::LightType::Point);
 }
 
 void LightDock::addDirectionalLight()
 {
-    addLight(false);
+    addLight(doc::LightType::Directional);
 }
 
-void LightDock::addLight(bool point)
+void LightDock::addRectLight()
+{
+    addLight(doc::LightType::Rect);
+}
+
+void LightDock::addDiskLight()
+{
+    addLight(doc::LightType::Disk);
+}
+
+void LightDock::addLight(doc::LightType type)
 {
     if (!m_document)
         return;
     // The name stays empty: the document numbers new lights per type.
     doc::LightNode light;
-    if (point) {
-        light.type = doc::LightType::Point;
-        // Where the user is looking is inside the scene more often than any fixed point.
-        light.position = m_document->state().camera.lookAt;
-        light.intensity = 1.0f;
-    } else {
+    if (type == doc::LightType::Rect || type == doc::LightType::Disk) {
+        light = newSurfaceLight(
+            type, m_document->buildRenderScene().bounds(), m_document->state().camera.lookAt);
+    } else if (type == doc::LightType::Directional) {
         light.type = doc::LightType::Directional;
         light.direction = glm::vec3(-0.3f, -1.0f, -0.2f);
+        light.intensity = 1.0f;
+    } else {
+        light.type = type;
+        // Where the user is looking is inside the scene more often than any fixed point.
+        light.position = m_document->state().camera.lookAt;
         light.intensity = 1.0f;
     }
     m_document->addLight(light);
@@ -311,16 +436,20 @@ void LightDock::loadLight()
     m_remove->setEnabled(valid);
     m_addPoint->setEnabled(m_document);
     m_addDirectional->setEnabled(m_document);
+    m_addRect->setEnabled(m_document);
+    m_addDisk->setEnabled(m_document);
     if (!valid) {
-        m_directionLabel->hide();
-        m_directionRow->hide();
-        m_spotLabel->hide();
-        m_spotRow->hide();
+        for (QWidget* w : std::initializer_list<QWidget*> { m_directionLabel, m_directionRow, m_spotLabel,
+                 m_spotRow, m_areaWidthLabel, m_areaWidth, m_areaHeightLabel, m_areaHeight,
+                 m_areaRotationLabel, m_areaRotation })
+            w->hide();
         return;
     }
     const doc::LightNode& l = m_document->state().lights[std::size_t(index)];
-    const bool point = l.isPointLike();
+    const bool positioned = l.isPointLike() || l.isSurface();
     const bool spot = l.type == doc::LightType::Spot;
+    const bool surface = l.isSurface();
+    const bool rect = l.type == doc::LightType::Rect;
 
     const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity), b5(m_spotInner),
         b6(m_spotOuter);
@@ -331,15 +460,30 @@ void LightDock::loadLight()
         setSpinValue(m_position[std::size_t(i)], double(l.position[i]));
         setSpinValue(m_direction[std::size_t(i)], double(l.direction[i]));
     }
-    m_positionLabel->setVisible(point);
-    m_positionRow->setVisible(point);
-    m_directionLabel->setVisible(!point || spot);
-    m_directionRow->setVisible(!point || spot);
+    m_positionLabel->setText(surface ? tr("Centre") : tr("Position"));
+    m_positionLabel->setVisible(positioned);
+    m_positionRow->setVisible(positioned);
+    const bool directed = l.type != doc::LightType::Point;
+    m_directionLabel->setVisible(directed);
+    m_directionRow->setVisible(directed);
+    for (QDoubleSpinBox* spin : m_direction)
+        spin->setToolTip(directionTip(l.type));
     m_spotLabel->setVisible(spot);
     m_spotRow->setVisible(spot);
     setSpinValue(m_spotInner, double(l.spotInnerDeg));
     setSpinValue(m_spotOuter, double(l.spotOuterDeg));
+    m_areaWidthLabel->setText(rect ? tr("Width") : tr("Diameter"));
+    m_areaWidthLabel->setVisible(surface);
+    m_areaWidth->setVisible(surface);
+    m_areaHeightLabel->setVisible(rect);
+    m_areaHeight->setVisible(rect);
+    m_areaRotationLabel->setVisible(rect);
+    m_areaRotation->setVisible(rect);
+    setSpinValue(m_areaWidth, double(l.areaWidth));
+    setSpinValue(m_areaHeight, double(l.areaHeight));
+    setSpinValue(m_areaRotation, double(l.areaRotationDeg));
     m_color->setColor(l.color);
+    m_intensityLabel->setText(surface ? tr("Radiance") : tr("Intensity"));
     m_intensity->setSuffix(intensityUnit(l.type));
     setSpinValue(m_intensity, double(l.intensity));
     m_shadows->setChecked(l.castsShadows);

@@ -24,10 +24,12 @@ class ColorButton;
 class SceneTreeModel;
 
 /**
- * The document's lights: a list (the "Lights" group of a SceneTreeModel), Add point / Add directional /
- * Remove, and editors for the current light. Point lights have a position (metres) and an intensity in W/sr;
- * directional lights a direction (the way the light travels, need not be unit length) and an irradiance in
- * W/m². Every edit is one Document::setLight / addLight / removeLight.
+ * The document's lights: a list (the "Lights" group of a SceneTreeModel), Add point / Add directional / Add
+ * rect / Add disk / Remove, and editors for the current light. Point lights have a position (metres) and an
+ * intensity in W/sr; directional lights a direction (the way the light travels, need not be unit length) and
+ * an irradiance in W/m²; rect and disk lights a centre, the direction their front face looks, a size in
+ * metres (a disk's diameter), a rect's rotation about its direction, and a radiance in W/(m² sr). Every edit
+ * is one Document::setLight / addLight / removeLight.
  */
 class LightDock : public QDockWidget {
     Q_OBJECT
@@ -46,6 +48,9 @@ public:
     /** Adds a light of the given type near the camera's look-at point; one undo step. */
     void addPointLight();
     void addDirectionalLight();
+    /** Adds a rect or disk light just under the scene's top, facing down; one undo step. */
+    void addRectLight();
+    void addDiskLight();
     /** Removes the current light; one undo step. */
     void removeCurrentLight();
 
@@ -54,7 +59,7 @@ private:
     /** Points the list at the model's "Lights" group again (a model reset invalidates the old root). */
     void attachList();
     void loadLight();
-    void addLight(bool point);
+    void addLight(doc::LightType type);
     void applyEdit(const std::function<void(doc::LightNode&)>& change);
 
     QPointer<doc::Document> m_document;
@@ -63,6 +68,8 @@ private:
     QListView* m_list = nullptr;
     QPushButton* m_addPoint = nullptr;
     QPushButton* m_addDirectional = nullptr;
+    QPushButton* m_addRect = nullptr;
+    QPushButton* m_addDisk = nullptr;
     QPushButton* m_remove = nullptr;
     QWidget* m_editors = nullptr;
     QLineEdit* m_name = nullptr;
@@ -74,11 +81,18 @@ private:
     QWidget* m_directionRow = nullptr;
     std::array<QDoubleSpinBox*, 3> m_direction {};
     ColorButton* m_color = nullptr;
+    QLabel* m_intensityLabel = nullptr; ///< "Intensity", or "Radiance" for rects and disks
     QDoubleSpinBox* m_intensity = nullptr;
     QLabel* m_spotLabel = nullptr;
     QWidget* m_spotRow = nullptr;
     QDoubleSpinBox* m_spotInner = nullptr; ///< degrees from the axis
     QDoubleSpinBox* m_spotOuter = nullptr;
+    QLabel* m_areaWidthLabel = nullptr; ///< "Width", or "Diameter" for disks
+    QDoubleSpinBox* m_areaWidth = nullptr; ///< metres
+    QLabel* m_areaHeightLabel = nullptr;
+    QDoubleSpinBox* m_areaHeight = nullptr; ///< metres, rects only
+    QLabel* m_areaRotationLabel = nullptr;
+    QDoubleSpinBox* m_areaRotation = nullptr; ///< degrees about the direction, rects only
     QCheckBox* m_shadows = nullptr;
     bool m_applying = false; ///< True while our own setLight runs: the editors already show the result.
 };

@@ -22,10 +22,34 @@ QString lightTypeName(doc::LightType type)
         return SceneTreeModel::tr("Directional");
     case doc::LightType::Spot:
         return SceneTreeModel::tr("Spot");
+    case doc::LightType::Rect:
+        return SceneTreeModel::tr("Rect");
+    case doc::LightType::Disk:
+        return SceneTreeModel::tr("Disk");
     case doc::LightType::Point:
         break;
     }
     return SceneTreeModel::tr("Point");
+}
+
+/** What the light's scalar measures, with its unit: "intensity %1 W/sr". */
+QString lightQuantity(const doc::LightNode& light)
+{
+    if (light.isSurface())
+        return SceneTreeModel::tr("radiance %1 W/(m² sr)").arg(double(light.intensity));
+    if (light.type == doc::LightType::Directional)
+        return SceneTreeModel::tr("intensity %1 W/m²").arg(double(light.intensity));
+    return SceneTreeModel::tr("intensity %1 W/sr").arg(double(light.intensity));
+}
+
+/** ", 1 × 0.5 m" for a rect, ", 0.3 m across" for a disk, nothing for other lights. */
+QString lightSize(const doc::LightNode& light)
+{
+    if (light.type == doc::LightType::Rect)
+        return SceneTreeModel::tr(", %1 × %2 m").arg(double(light.areaWidth)).arg(double(light.areaHeight));
+    if (light.type == doc::LightType::Disk)
+        return SceneTreeModel::tr(", %1 m across").arg(double(light.areaWidth));
+    return {};
 }
 
 } // namespace
@@ -223,11 +247,9 @@ QVariant SceneTreeModel::lightData(int light, int column, int role) const
     case Qt::DisplayRole:
         return l.name.isEmpty() ? tr("%1 light %2").arg(lightTypeName(l.type)).arg(light + 1) : l.name;
     case Qt::ToolTipRole:
-        return tr("%1 light, intensity %2 %3%4")
-            .arg(lightTypeName(l.type))
-            .arg(double(l.intensity))
-            .arg(l.type == doc::LightType::Directional ? tr("W/m²") : tr("W/sr"))
-            .arg(l.castsShadows ? tr(", casts shadows") : QString());
+        return tr("%1 light, %2%3%4")
+            .arg(lightTypeName(l.type), lightQuantity(l), lightSize(l),
+                l.castsShadows ? tr(", casts shadows") : QString());
     default:
         return {};
     }

@@ -27,8 +27,8 @@ std::string blackImageWarning(
     for (const glm::vec3& p : image.pixels)
         if (p.x > 0.0f || p.y > 0.0f || p.z > 0.0f)
             return {};
-    const bool lit
-        = !scene.pointLights.empty() || !scene.directionalLights.empty() || scene.hasEmissiveMaterial();
+    const bool lit = !scene.pointLights.empty() || !scene.directionalLights.empty()
+        || !scene.surfaceLights.empty() || scene.hasEmissiveMaterial();
     if (!lit)
         return {};
     const render::Aabb bounds = scene.bounds();

@@ -52,17 +52,20 @@ std::vector<EditSequence> PlanBenchmark::standardSequences(const render::Scene& 
                              camera.position = camera.lookAt
                                  + glm::vec3(turn * glm::vec4(camera.position - camera.lookAt, 0.0f));
                          } });
-    if (!scene.pointLights.empty() || !scene.directionalLights.empty())
+    if (!scene.pointLights.empty() || !scene.directionalLights.empty() || !scene.surfaceLights.empty())
         sequences.push_back(
             { "move the light", [scene](render::Renderer& renderer, render::Camera&, int frame) {
                  std::vector<render::PointLight> points = scene.pointLights;
                  std::vector<render::DirectionalLight> directionals = scene.directionalLights;
+                 std::vector<render::SurfaceLight> surfaces = scene.surfaceLights;
                  const float offset = 0.05f * float(frame + 1);
                  for (render::PointLight& light : points)
                      light.position.x += offset;
                  for (render::DirectionalLight& light : directionals)
                      light.direction.x += offset;
-                 renderer.setLights(points, directionals);
+                 for (render::SurfaceLight& light : surfaces)
+                     light.centre.x += offset;
+                 renderer.setLights(points, directionals, surfaces);
              } });
     for (std::size_t i = 0; i < scene.meshes.size(); ++i)
         if (scene.meshes[i].dynamic) {

@@ -44,6 +44,7 @@ bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, cons
         render::Scene lit = scene;
         lit.pointLights.clear();
         lit.directionalLights.clear();
+        lit.surfaceLights.clear();
         if (!doc::LightsFile::read(lightsPath, lit, error))
             return false;
         scene = std::move(lit);

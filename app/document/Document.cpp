@@ -46,6 +46,24 @@ void splitColor(const glm::vec3& value, glm::vec3* color, float* intensity)
     }
 }
 
+/** The type as the first word of a light's default name ("Rect light 2"). */
+QString lightKindName(LightType type)
+{
+    switch (type) {
+    case LightType::Point:
+        return QStringLiteral("Point");
+    case LightType::Directional:
+        return QStringLiteral("Directional");
+    case LightType::Spot:
+        return QStringLiteral("Spot");
+    case LightType::Rect:
+        return QStringLiteral("Rect");
+    case LightType::Disk:
+        return QStringLiteral("Disk");
+    }
+    return QStringLiteral("Point");
+}
+
 int countLights(const std::vector<LightNode>& lights, LightType type)
 {
     return int(
@@ -89,6 +107,27 @@ std::vector<LightNode> lightsFromScene(
         l.direction = d.direction;
         splitColor(d.irradiance, &l.color, &l.intensity);
         l.castsShadows = d.castsShadows;
+        lights.push_back(l);
+    }
+    int rectNumber = countLights(existing, LightType::Rect);
+    int diskNumber = countLights(existing, LightType::Disk);
+    for (const render::SurfaceLight& s : scene.surfaceLights) {
+        LightNode l;
+        l.id = (*nextId)++;
+        if (s.shape == render::SurfaceLight::Shape::Disk) {
+            l.name = QStringLiteral("Disk light %1").arg(++diskNumber);
+            l.type = LightType::Disk;
+        } else {
+            l.name = QStringLiteral("Rect light %1").arg(++rectNumber);
+            l.type = LightType::Rect;
+        }
+        l.position = s.centre;
+        l.direction = s.direction;
+        l.areaWidth = s.width;
+        l.areaHeight = s.height;
+        l.areaRotationDeg = s.rotationDeg;
+        splitColor(s.radiance, &l.color, &l.intensity);
+        l.castsShadows = s.castsShadows;
         lights.push_back(l);
     }
     return lights;
@@ -347,9 +386,7 @@ void Document::addLight(const LightNode& light)
 {
     LightNode added = light;
     if (added.name.isEmpty()) {
-        const QString kind = added.type == LightType::Point ? QStringLiteral("Point")
-            : added.type == LightType::Spot                 ? QStringLiteral("Spot")
-                                                            : QStringLiteral("Directional");
+        const QString kind = lightKindName(added.type);
         added.name = QStringLiteral("%1 light %2").arg(kind).arg(countLights(m_state.lights, added.type) + 1);
     }
     m_undoStack.push(new AddLightCommand(this, added));
@@ -445,7 +482,9 @@ render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
             meshToNode->push_back(int(i));
     }
     for (const LightNode& light : m_state.lights) {
-        if (light.isPointLike())
+        if (light.isSurface())
+            scene.surfaceLights.push_back(light.surfaceLight());
+        else if (light.isPointLike())
             scene.pointLights.push_back(light.pointLight());
         else
             scene.directionalLights.push_back(light.directionalLight());

@@ -7,6 +7,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
+#include <cmath>
 #include <vector>
 
 namespace vct::doc {
@@ -16,6 +17,90 @@ namespace {
 bool isNonNegative(const glm::vec3& v)
 {
     return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
+}
+
+// The JSON numbers are finite doubles, but may still overflow a float.
+bool isFinite(const glm::vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/** A vec3 that is finite as floats too. */
+bool readFiniteVec3(JsonFieldReader& reader, const QJsonObject& object, const QString& key,
+    const QString& fieldPath, glm::vec3* value)
+{
+    glm::vec3 v(0.0f);
+    if (!reader.readVec3(object, key, fieldPath, &v))
+        return false;
+    if (!isFinite(v))
+        return reader.fail(fieldPath, QStringLiteral("a value is too large"));
+    *value = v;
+    return true;
+}
+
+/** A float length in metres, more than zero. */
+bool readPositiveLength(JsonFieldReader& reader, double value, const QString& fieldPath, float* length)
+{
+    if (!std::isfinite(float(value)))
+        return reader.fail(fieldPath, QStringLiteral("%1 is too large").arg(value));
+    if (!(float(value) > 0.0f))
+        return reader.fail(fieldPath, QStringLiteral("must be more than 0 m, found %1").arg(value));
+    *length = float(value);
+    return true;
+}
+
+/**
+ * The fields of a "rect" or "disk" light after "type" and "shadows": position, direction, its size, rotation
+ * and radiance. False with the reader's error on the first bad field.
+ */
+bool readSurfaceLight(JsonFieldReader& reader, const QJsonObject& light, const QString& prefix, bool rect,
+    render::SurfaceLight* surface)
+{
+    surface->shape = rect ? render::SurfaceLight::Shape::Rectangle : render::SurfaceLight::Shape::Disk;
+    if (!readFiniteVec3(
+            reader, light, QStringLiteral("position"), prefix + QStringLiteral(".position"), &surface->centre)
+        || !readFiniteVec3(reader, light, QStringLiteral("direction"), prefix + QStringLiteral(".direction"),
+            &surface->direction))
+        return false;
+    if (!(glm::length(surface->direction) > 0.0f))
+        return reader.fail(prefix + QStringLiteral(".direction"), QStringLiteral("must not be zero"));
+    if (rect) {
+        const QString sizePath = prefix + QStringLiteral(".size");
+        const QJsonValue size = light.value(QStringLiteral("size"));
+        const QJsonArray pair = size.toArray();
+        if (!size.isArray() || pair.size() != 2)
+            return reader.fail(
+                sizePath, QStringLiteral("expected an array of 2 numbers: width and height in metres"));
+        for (int i = 0; i < 2; ++i)
+            if (!pair[i].isDouble() || !std::isfinite(pair[i].toDouble()))
+                return reader.fail(sizePath, QStringLiteral("element %1 is not a finite number").arg(i));
+        if (!readPositiveLength(reader, pair[0].toDouble(), sizePath, &surface->width)
+            || !readPositiveLength(reader, pair[1].toDouble(), sizePath, &surface->height))
+            return false;
+        // Optional: most rectangles line up with the scene's horizontal axis.
+        if (light.contains(QStringLiteral("rotation_deg"))) {
+            double rotation = 0.0;
+            if (!reader.readNumber(light, QStringLiteral("rotation_deg"),
+                    prefix + QStringLiteral(".rotation_deg"), &rotation))
+                return false;
+            if (!std::isfinite(float(rotation)))
+                return reader.fail(prefix + QStringLiteral(".rotation_deg"),
+                    QStringLiteral("%1 is too large").arg(rotation));
+            surface->rotationDeg = float(rotation);
+        }
+    } else {
+        double diameter = 0.0;
+        if (!reader.readNumber(
+                light, QStringLiteral("diameter"), prefix + QStringLiteral(".diameter"), &diameter)
+            || !readPositiveLength(reader, diameter, prefix + QStringLiteral(".diameter"), &surface->width))
+            return false;
+    }
+    if (!readFiniteVec3(reader, light, QStringLiteral("radiance"), prefix + QStringLiteral(".radiance"),
+            &surface->radiance))
+        return false;
+    if (!isNonNegative(surface->radiance))
+        return reader.fail(prefix + QStringLiteral(".radiance"), QStringLiteral("must not be negative"));
+    return true;
 }
 
 } // namespace
@@ -44,6 +129,7 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
 
     std::vector<render::PointLight> points;
     std::vector<render::DirectionalLight> directionals;
+    std::vector<render::SurfaceLight> surfaces;
     const QJsonArray lights = lightsValue.toArray();
     for (int i = 0; i < lights.size(); ++i) {
         const QString prefix = QStringLiteral("lights[%1]").arg(i);
@@ -115,9 +201,16 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
                 return failed();
             }
             directionals.push_back(directional);
+        } else if (type == QLatin1String("rect") || type == QLatin1String("disk")) {
+            render::SurfaceLight surface;
+            surface.castsShadows = castsShadows;
+            if (!readSurfaceLight(reader, light, prefix, type == QLatin1String("rect"), &surface))
+                return failed();
+            surfaces.push_back(surface);
         } else {
             reader.fail(prefix + QStringLiteral(".type"),
-                QStringLiteral("unknown light type \"%1\" (expected \"point\", \"spot\" or \"directional\")")
+                QStringLiteral("unknown light type \"%1\" (expected \"point\", \"spot\", \"directional\", "
+                               "\"rect\" or \"disk\")")
                     .arg(type));
             return failed();
         }
@@ -125,6 +218,7 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
 
     scene.pointLights.insert(scene.pointLights.end(), points.begin(), points.end());
     scene.directionalLights.insert(scene.directionalLights.end(), directionals.begin(), directionals.end());
+    scene.surfaceLights.insert(scene.surfaceLights.end(), surfaces.begin(), surfaces.end());
     return true;
 }
 

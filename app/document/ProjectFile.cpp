@@ -15,6 +15,7 @@
 #include <cerrno>
 #include <climits>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace vct::doc {
@@ -42,6 +43,10 @@ QString lightTypeName(LightType type)
         return QStringLiteral("directional");
     case LightType::Spot:
         return QStringLiteral("spot");
+    case LightType::Rect:
+        return QStringLiteral("rect");
+    case LightType::Disk:
+        return QStringLiteral("disk");
     case LightType::Point:
         break;
     }
@@ -250,6 +255,46 @@ bool readNodes(ProjectReader& r, const QJsonObject& root, DocumentState& out)
     return true;
 }
 
+/**
+ * A rect's "size" ([width, height], metres) and optional "rotation_deg", or a disk's "diameter"; the same
+ * names as in lights files. A surface light without area or facing nowhere emits nothing, so both are
+ * refused.
+ */
+bool readSurfaceFields(ProjectReader& r, const QJsonObject& o, const QString& path, LightNode& l)
+{
+    constexpr float kLowest = std::numeric_limits<float>::lowest(); // any sign: the checks below say more
+    if (l.direction == glm::vec3(0.0f))
+        return r.fail(
+            path + "direction", QStringLiteral("must not be zero for a %1 light").arg(lightTypeName(l.type)));
+    if (l.type == LightType::Disk) {
+        if (!r.readFloat(o, "diameter", path + "diameter", kLowest, &l.areaWidth))
+            return false;
+        if (!(l.areaWidth > 0.0f))
+            return r.fail(
+                path + "diameter", QStringLiteral("must be more than 0 m, found %1").arg(l.areaWidth));
+        return true;
+    }
+    const QJsonValue size = o.value("size");
+    const QJsonArray pair = size.toArray();
+    if (!size.isArray() || pair.size() != 2)
+        return r.fail(
+            path + "size", QStringLiteral("expected an array of 2 numbers: width and height in metres"));
+    const QJsonObject fields { { "width", pair[0] }, { "height", pair[1] } };
+    if (!r.readFloat(fields, "width", path + "size", kLowest, &l.areaWidth)
+        || !r.readFloat(fields, "height", path + "size", kLowest, &l.areaHeight))
+        return false;
+    if (!(l.areaWidth > 0.0f && l.areaHeight > 0.0f))
+        return r.fail(path + "size",
+            QStringLiteral("width and height must be more than 0 m, found %1 and %2")
+                .arg(l.areaWidth)
+                .arg(l.areaHeight));
+    // Optional: hand-written projects may leave a rect square to the scene's axes.
+    if (o.contains("rotation_deg")
+        && !r.readFloat(o, "rotation_deg", path + "rotation_deg", kLowest, &l.areaRotationDeg))
+        return false;
+    return true;
+}
+
 bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 {
     QJsonArray array;
@@ -271,9 +316,15 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
             l.type = LightType::Directional;
         else if (type == QStringLiteral("spot"))
             l.type = LightType::Spot;
+        else if (type == QStringLiteral("rect"))
+            l.type = LightType::Rect;
+        else if (type == QStringLiteral("disk"))
+            l.type = LightType::Disk;
         else
             return r.fail(path + "type",
-                QStringLiteral("expected \"point\", \"spot\" or \"directional\", found \"%1\"").arg(type));
+                QStringLiteral(
+                    "expected \"point\", \"spot\", \"directional\", \"rect\" or \"disk\", found \"%1\"")
+                    .arg(type));
         if (!r.readFiniteVec3(o, "position", path + "position", &l.position)
             || !r.readFiniteVec3(o, "direction", path + "direction", &l.direction)
             || !r.readFiniteVec3(o, "color", path + "color", &l.color)
@@ -290,6 +341,8 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
                         .arg(l.spotInnerDeg)
                         .arg(l.spotOuterDeg));
         }
+        if (l.isSurface() && !readSurfaceFields(r, o, path, l))
+            return false;
         out.lights.push_back(l);
     }
     return true;
@@ -393,6 +446,12 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
         if (l.type == LightType::Spot) {
             light["inner_deg"] = double(l.spotInnerDeg);
             light["outer_deg"] = double(l.spotOuterDeg);
+        }
+        if (l.type == LightType::Rect) {
+            light["size"] = QJsonArray { double(l.areaWidth), double(l.areaHeight) };
+            light["rotation_deg"] = double(l.areaRotationDeg);
+        } else if (l.type == LightType::Disk) {
+            light["diameter"] = double(l.areaWidth);
         }
         lights.append(light);
     }

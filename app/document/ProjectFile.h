@@ -19,8 +19,11 @@ namespace vct::doc {
  *   dynamic, visible.
  * - materials: name, albedo, emission (W/(m^2 sr)), specular, shininess, albedo_texture (index into the
  *   textures of all sources concatenated in source order, or -1).
- * - lights: id, name, type (point|directional), position (m), direction, color, intensity (W/sr or W/m^2),
- *   shadows.
+ * - lights: id, name, type (point|spot|directional|rect|disk), position (m; rects and disks: the centre),
+ *   direction, color, intensity (W/sr, W/m^2 or, for rects and disks, radiance in W/(m^2 sr)), shadows; spots
+ *   also inner_deg and outer_deg, rects size ([width, height], m) and rotation_deg, disks diameter (m), as
+ *   in lights files (LightsFile). New light types came without a new version: an older reader refuses them
+ *   naming the type, and every file it could read reads the same.
  * - camera: position, look_at, up, fov_y_deg, near_plane (m).
  * - settings: every RenderSettings key with its value as text, read back through RenderSettings::set.
  *

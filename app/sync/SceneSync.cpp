@@ -11,13 +11,16 @@ void applyLights(const doc::DocumentState& state, render::Renderer& renderer)
 {
     std::vector<render::PointLight> points;
     std::vector<render::DirectionalLight> directionals;
+    std::vector<render::SurfaceLight> surfaces;
     for (const doc::LightNode& light : state.lights) {
-        if (light.isPointLike())
+        if (light.isSurface())
+            surfaces.push_back(light.surfaceLight());
+        else if (light.isPointLike())
             points.push_back(light.pointLight());
         else
             directionals.push_back(light.directionalLight());
     }
-    renderer.setLights(points, directionals);
+    renderer.setLights(points, directionals, surfaces);
 }
 
 } // namespace

@@ -34,6 +34,47 @@ AreaLightSet AreaLightSet::fromScene(const Scene& scene)
     const Aabb bounds = scene.bounds();
     // Corners closer than this are one: relative to the scene, as every tolerance is (tests/hardcases).
     const float weld = bounds.isEmpty() ? 0.0f : 1e-5f * glm::length(bounds.size());
+    set.addSurfaceLights(scene);
+    set.addEmitters(scene, weld);
+    if (!set.emissiveNote.empty())
+        set.note += (set.note.empty() ? "" : "; ") + set.emissiveNote;
+    return set;
+}
+
+void AreaLightSet::addSurfaceLights(const Scene& scene)
+{
+    std::size_t beyondLimits = 0;
+    for (const SurfaceLight& surface : scene.surfaceLights) {
+        Material asMaterial;
+        asMaterial.emission = surface.radiance;
+        const glm::vec3 radiance = asMaterial.usableEmission();
+        if (radiance == glm::vec3(0.0f))
+            continue; // dark: nothing to light with, nothing lost
+        const std::vector<glm::vec3> corners = surface.triangles();
+        if (corners.empty()) {
+            ++droppedSurfaceLights;
+            continue;
+        }
+        if (int(lights.size()) >= kMaxLights || triangles.size() / 3 + corners.size() / 3 > kMaxTriangles) {
+            ++droppedSurfaceLights;
+            ++beyondLimits;
+            continue;
+        }
+        addLight(radiance, corners, 0.0f);
+        lights.back().castsShadows = surface.castsShadows;
+        ++surfaceLightCount;
+    }
+    if (droppedSurfaceLights > beyondLimits)
+        note = std::to_string(droppedSurfaceLights - beyondLimits)
+            + " rectangle or disk lights without a usable size, direction or position light nothing";
+    if (beyondLimits > 0)
+        note += (note.empty() ? "" : "; ") + std::to_string(beyondLimits)
+            + " rectangle or disk lights beyond the " + std::to_string(kMaxLights) + " area lights of "
+            + std::to_string(kMaxTriangles) + " triangles light nothing";
+}
+
+void AreaLightSet::addEmitters(const Scene& scene, float weld)
+{
     std::vector<Triangle> emitting;
     for (const Mesh& mesh : scene.meshes) {
         if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size())
@@ -55,25 +96,26 @@ AreaLightSet AreaLightSet::fromScene(const Scene& scene)
                 valid = valid && std::isfinite(tri.corners[k].x) && std::isfinite(tri.corners[k].y)
                     && std::isfinite(tri.corners[k].z);
             }
-            ++set.emissiveTriangles;
+            ++emissiveTriangles;
             const float area = valid ? 0.5f
                     * glm::length(
                         glm::cross(tri.corners[1] - tri.corners[0], tri.corners[2] - tri.corners[0]))
                                      : 0.0f;
             if (!valid || !(area > weld * weld)) {
-                ++set.droppedTriangles;
+                ++droppedTriangles;
                 continue;
             }
             emitting.push_back(tri);
         }
     }
     if (emitting.empty())
-        return set;
-    if (emitting.size() > std::size_t(kMaxTriangles)) {
-        set.note = std::to_string(emitting.size()) + " emissive triangles, more than the "
-            + std::to_string(kMaxTriangles)
+        return;
+    const std::size_t triangleRoom = std::size_t(kMaxTriangles) - triangles.size() / 3;
+    if (emitting.size() > triangleRoom) {
+        emissiveNote = std::to_string(emitting.size()) + " emissive triangles, more than the "
+            + std::to_string(triangleRoom)
             + " lit as area lights: their light reaches surfaces through the voxels only";
-        return set;
+        return;
     }
 
     // Triangles of one material that share a corner form one light.
@@ -93,50 +135,56 @@ AreaLightSet AreaLightSet::fromScene(const Scene& scene)
     std::map<int, std::vector<std::size_t>> groups;
     for (std::size_t i = 0; i < emitting.size(); ++i)
         groups[findRoot(parent, int(i))].push_back(i);
-    if (groups.size() > std::size_t(kMaxLights)) {
-        set.note = std::to_string(groups.size()) + " separate emitters, more than the "
-            + std::to_string(kMaxLights)
+    const std::size_t lightRoom = std::size_t(kMaxLights) - lights.size();
+    if (groups.size() > lightRoom) {
+        emissiveNote = std::to_string(groups.size()) + " separate emitters, more than the "
+            + std::to_string(lightRoom)
             + " lit as area lights: their light reaches surfaces through the voxels only";
-        return set;
+        return;
     }
     for (const auto& [root, members] : groups) {
-        AreaLight light;
-        light.radiance = scene.materials[std::size_t(emitting[members.front()].material)].usableEmission();
-        light.firstTriangle = int(set.triangles.size() / 3);
-        light.triangleCount = int(members.size());
-        Aabb box;
-        for (const std::size_t i : members) {
-            const Triangle& tri = emitting[i];
-            for (const glm::vec3& c : tri.corners) {
-                set.triangles.push_back(c);
-                box.extend(c);
-            }
-            light.area += 0.5f
-                * glm::length(glm::cross(tri.corners[1] - tri.corners[0], tri.corners[2] - tri.corners[0]));
-        }
-        light.centre = box.center();
-        for (std::size_t k = std::size_t(light.firstTriangle) * 3; k < set.triangles.size(); ++k)
-            light.radius = std::max(light.radius, glm::length(set.triangles[k] - light.centre));
-        // Planar when every triangle faces the first one's way and every corner lies in its plane.
-        const glm::vec3* first = &set.triangles[std::size_t(light.firstTriangle) * 3];
-        const glm::vec3 normal = glm::normalize(glm::cross(first[1] - first[0], first[2] - first[0]));
-        const float offset = glm::dot(normal, first[0]);
-        light.planar = true;
-        for (std::size_t k = std::size_t(light.firstTriangle) * 3; k < set.triangles.size(); k += 3) {
-            const glm::vec3* t = &set.triangles[k];
-            const glm::vec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
-            for (int c = 0; c < 3; ++c)
-                light.planar = light.planar
-                    && std::abs(glm::dot(normal, t[c]) - offset) <= 1e-4f * std::max(light.radius, weld);
-            light.planar = light.planar && glm::dot(n, normal) > 0.9999f;
-        }
-        if (light.planar) {
-            light.planeNormal = normal;
-            light.planeOffset = offset;
-        }
-        set.lights.push_back(light);
+        std::vector<glm::vec3> corners;
+        for (const std::size_t i : members)
+            corners.insert(corners.end(), std::begin(emitting[i].corners), std::end(emitting[i].corners));
+        addLight(
+            scene.materials[std::size_t(emitting[members.front()].material)].usableEmission(), corners, weld);
     }
-    return set;
+}
+
+void AreaLightSet::addLight(const glm::vec3& radiance, const std::vector<glm::vec3>& corners, float weld)
+{
+    AreaLight light;
+    light.radiance = radiance;
+    light.firstTriangle = int(triangles.size() / 3);
+    light.triangleCount = int(corners.size() / 3);
+    Aabb box;
+    for (std::size_t k = 0; k + 2 < corners.size(); k += 3) {
+        light.area
+            += 0.5f * glm::length(glm::cross(corners[k + 1] - corners[k], corners[k + 2] - corners[k]));
+        for (std::size_t c = 0; c < 3; ++c)
+            box.extend(corners[k + c]);
+    }
+    triangles.insert(triangles.end(), corners.begin(), corners.end());
+    light.centre = box.center();
+    for (const glm::vec3& c : corners)
+        light.radius = std::max(light.radius, glm::length(c - light.centre));
+    // Planar when every triangle faces the first one's way and every corner lies in its plane.
+    const glm::vec3 normal = glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
+    const float offset = glm::dot(normal, corners[0]);
+    light.planar = true;
+    for (std::size_t k = 0; k + 2 < corners.size(); k += 3) {
+        const glm::vec3* t = &corners[k];
+        const glm::vec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
+        for (int c = 0; c < 3; ++c)
+            light.planar = light.planar
+                && std::abs(glm::dot(normal, t[c]) - offset) <= 1e-4f * std::max(light.radius, weld);
+        light.planar = light.planar && glm::dot(n, normal) > 0.9999f;
+    }
+    if (light.planar) {
+        light.planeNormal = normal;
+        light.planeOffset = offset;
+    }
+    lights.push_back(light);
 }
 
 } // namespace vct::render

@@ -23,6 +23,7 @@ struct AreaLight {
     float area = 0.0f; ///< m^2
     int firstTriangle = 0; ///< into AreaLightSet::triangles (three corners each)
     int triangleCount = 0;
+    bool castsShadows = true; ///< false: lights through everything (a surface light may say so)
     /// All triangles in one plane, facing planeNormal (dot(planeNormal, x) = planeOffset): the shadow cone
     /// then stops short of that plane rather than of the bounding sphere.
     bool planar = false;
@@ -31,24 +32,36 @@ struct AreaLight {
 };
 
 /**
- * The scene's emissive triangles as area lights, for direct light per pixel and per voxel. When they do not
- * fit the limits the set is left incomplete and emission reaches surfaces through the voxels only, as light
- * the cones gather (`analytic()` is false; `note` says why).
+ * The scene's area lights, for direct light per pixel and per voxel: first its surface lights (rectangles and
+ * disks, which are lights, on with direct light), then its emissive triangles (emission, on with emission).
+ * That order lets a frame use a prefix of the table. When the emissive triangles do not fit the limits they
+ * are left out and their emission reaches surfaces through the voxels only, as light the cones gather
+ * (`meshEmittersAnalytic()` is false; `note` says why).
  */
 struct AreaLightSet {
     static constexpr int kMaxLights = 16;
     static constexpr int kMaxTriangles = 256;
 
-    std::vector<AreaLight> lights;
+    std::vector<AreaLight> lights; ///< the surface lights' first, then the emitters'
     std::vector<glm::vec3> triangles; ///< world-space corners, three per triangle, counter-clockwise front
+    int surfaceLightCount = 0; ///< the first lights: the scene's surface lights that can emit
     std::size_t emissiveTriangles = 0; ///< in the scene, with a positive, finite emission
     std::size_t droppedTriangles = 0; ///< of those, degenerate or non-finite (no area to emit from)
-    std::string note; ///< empty, or why the set is not used (too many emitters)
+    std::size_t droppedSurfaceLights = 0; ///< zero-sized, non-finite or beyond the limits
+    std::string note; ///< empty, or what is not lit as an area light, and why
+    std::string emissiveNote; ///< empty, or why the emissive triangles are not in the set
 
-    /** True when every emitting triangle of the scene is in the set: the renderer then lights with it. */
-    bool analytic() const { return !lights.empty() && note.empty(); }
-    /** The set of a scene: emissive materials' triangles, transformed, grouped by connectivity. */
+    int emitterLightCount() const { return int(lights.size()) - surfaceLightCount; }
+    /** True when every emitting triangle of the scene is in the set: its emission stays out of the voxels. */
+    bool meshEmittersAnalytic() const { return emitterLightCount() > 0 && emissiveNote.empty(); }
+    /** The set of a scene: surface lights, then emissive materials' triangles grouped by connectivity. */
     static AreaLightSet fromScene(const Scene& scene);
+
+private:
+    void addSurfaceLights(const Scene& scene);
+    void addEmitters(const Scene& scene, float weld);
+    /** Appends a light made of `corners` (three per triangle), with its bounds and plane. */
+    void addLight(const glm::vec3& radiance, const std::vector<glm::vec3>& corners, float weld);
 };
 
 } // namespace vct::render

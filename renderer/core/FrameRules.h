@@ -13,8 +13,9 @@ struct FrameRules {
     static bool hasLightSources(const FrameContext& frame)
     {
         const Scene& scene = frame.scene.scene();
-        const bool lights
-            = frame.settings.direct && (!scene.pointLights.empty() || !scene.directionalLights.empty());
+        const bool lights = frame.settings.direct
+            && (!scene.pointLights.empty() || !scene.directionalLights.empty()
+                || frame.scene.areaLights().surfaceLightCount > 0);
         return lights || emissionNeeded(frame);
     }
     static bool emissionNeeded(const FrameContext& frame)
@@ -26,18 +27,27 @@ struct FrameRules {
      * limits and direct light is on; their emission then stays out of the voxels' radiance, where cones would
      * gather the same light a second time.
      */
-    static bool areaLightsUsed(const FrameContext& frame)
+    static bool emittersAsAreaLights(const FrameContext& frame)
     {
-        return emissionNeeded(frame) && frame.settings.direct && frame.scene.areaLights().analytic();
+        return emissionNeeded(frame) && frame.settings.direct
+            && frame.scene.areaLights().meshEmittersAnalytic();
     }
+    /**
+     * The area lights this frame lights with: a prefix of the table, the rectangle and disk lights (on with
+     * direct light) and then the emitters when they are lit as area lights.
+     */
     static int areaLightCount(const FrameContext& frame)
     {
-        return areaLightsUsed(frame) ? int(frame.scene.areaLights().lights.size()) : 0;
+        const AreaLightSet& set = frame.scene.areaLights();
+        if (!frame.settings.direct)
+            return 0;
+        return set.surfaceLightCount + (emittersAsAreaLights(frame) ? set.emitterLightCount() : 0);
     }
+    static bool areaLightsUsed(const FrameContext& frame) { return areaLightCount(frame) > 0; }
     /** Emission goes into the voxels for the cones to gather: when it is not lit as area lights. */
     static bool voxelEmissionNeeded(const FrameContext& frame)
     {
-        return emissionNeeded(frame) && !areaLightsUsed(frame);
+        return emissionNeeded(frame) && !emittersAsAreaLights(frame);
     }
     /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
     static bool ambientOcclusionNeeded(const FrameContext& frame)

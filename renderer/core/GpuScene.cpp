@@ -47,6 +47,18 @@ std::vector<glm::vec3> fallbackNormals(const Mesh& mesh)
     return normals;
 }
 
+bool sameSurfaceLights(const std::vector<SurfaceLight>& a, const std::vector<SurfaceLight>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].shape != b[i].shape || a[i].centre != b[i].centre || a[i].direction != b[i].direction
+            || a[i].width != b[i].width || a[i].height != b[i].height || a[i].rotationDeg != b[i].rotationDeg
+            || a[i].radiance != b[i].radiance || a[i].castsShadows != b[i].castsShadows)
+            return false;
+    return true;
+}
+
 struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
@@ -115,14 +127,17 @@ void GpuScene::rebuildAreaLights()
 {
     m_areaLights = AreaLightSet::fromScene(m_scene);
     ++m_areaLightsVersion;
-    // Four rgba32f texels per light (radiance + first triangle; sphere centre + radius; area, triangle count,
-    // planar flag; plane normal + offset), then three per triangle (its corners), as
-    // shaders/common/AreaLights.glsl reads them.
+    // Four rgba32f texels per light (radiance + the texel of its first triangle; sphere centre + radius;
+    // area, triangle count, planar flag, shadow flag; plane normal + offset), then three per triangle (its
+    // corners), as shaders/common/AreaLights.glsl reads them. A frame may light with a prefix of the lights
+    // (FrameRules::areaLightCount), so each light says where its triangles are.
     std::vector<glm::vec4> entries;
+    const int firstTriangleTexel = 4 * int(m_areaLights.lights.size());
     for (const AreaLight& light : m_areaLights.lights) {
-        entries.emplace_back(light.radiance, float(light.firstTriangle));
+        entries.emplace_back(light.radiance, float(firstTriangleTexel + 3 * light.firstTriangle));
         entries.emplace_back(light.centre, light.radius);
-        entries.emplace_back(light.area, float(light.triangleCount), light.planar ? 1.0f : 0.0f, 0.0f);
+        entries.emplace_back(light.area, float(light.triangleCount), light.planar ? 1.0f : 0.0f,
+            light.castsShadows ? 1.0f : 0.0f);
         entries.emplace_back(light.planeNormal, light.planeOffset);
     }
     for (const glm::vec3& corner : m_areaLights.triangles)
@@ -311,11 +326,15 @@ void GpuScene::setMaterial(std::size_t index, const Material& material)
     }
 }
 
-void GpuScene::setLights(
-    const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
+void GpuScene::setLights(const std::vector<PointLight>& points,
+    const std::vector<DirectionalLight>& directionals, const std::vector<SurfaceLight>& surfaces)
 {
     m_scene.pointLights = points;
     m_scene.directionalLights = directionals;
+    if (!sameSurfaceLights(surfaces, m_scene.surfaceLights)) {
+        m_scene.surfaceLights = surfaces;
+        rebuildAreaLights();
+    }
 }
 
 bool GpuScene::hasDynamicMeshes() const

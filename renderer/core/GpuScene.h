@@ -74,7 +74,8 @@ public:
     void bindAreaLightTable(GLuint unit) const;
     void setTransform(std::size_t mesh, const glm::mat4& transform);
     void setMaterial(std::size_t index, const Material& material);
-    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
+    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals,
+        const std::vector<SurfaceLight>& surfaces);
     const Scene& scene() const { return m_scene; }
     /** The material a mesh is drawn with: its own, or the default one when its index is out of range. */
     const Material& materialOf(std::size_t mesh) const;

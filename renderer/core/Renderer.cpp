@@ -288,8 +288,8 @@ void Renderer::setMaterial(std::size_t index, const Material& material)
         ++m_state->versions.dynamicMaterials;
 }
 
-void Renderer::setLights(
-    const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals)
+void Renderer::setLights(const std::vector<PointLight>& points,
+    const std::vector<DirectionalLight>& directionals, const std::vector<SurfaceLight>& surfaces)
 {
     const Scene& old = m_state->scene->scene();
     // A change of colour or intensity alone keeps the shadow maps.
@@ -302,7 +302,9 @@ void Renderer::setLights(
     for (std::size_t i = 0; !placementChanged && i < directionals.size(); ++i)
         placementChanged = directionals[i].direction != old.directionalLights[i].direction
             || directionals[i].castsShadows != old.directionalLights[i].castsShadows;
-    m_state->scene->setLights(points, directionals);
+    // Rectangle and disk lights are no geometry and cast through no shadow map: their change is one of light
+    // values, and the area-light table's version tells the passes that read it.
+    m_state->scene->setLights(points, directionals, surfaces);
     if (placementChanged)
         ++m_state->versions.lightPlacement;
     ++m_state->versions.lightValues;

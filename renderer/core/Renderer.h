@@ -47,7 +47,8 @@ public:
     /** Moves one mesh. Moving a dynamic mesh re-voxelizes dynamic meshes only. */
     void setMeshTransform(std::size_t mesh, const glm::mat4& transform);
     void setMaterial(std::size_t index, const Material& material);
-    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals);
+    void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals,
+        const std::vector<SurfaceLight>& surfaces);
 
     /** Forgets every cached pass output: the next frame runs every pass (benchmarks, forced-full
      * comparisons). */

@@ -94,8 +94,8 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
             + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
     if (FrameRules::areaLightsUsed(frame))
-        reason += "; emitters lit as " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
-    else if (!frame.scene.areaLights().note.empty())
+        reason += "; " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
+    if (!frame.scene.areaLights().note.empty())
         reason += "; " + frame.scene.areaLights().note;
     if (!FrameRules::emissionNeeded(frame))
         reason += "; no emission to inject";

@@ -30,15 +30,51 @@ float maxComponent(const glm::vec3& v)
 /** Shadow rays stop this fraction short of their target, so they never reach the surface they aim at. */
 constexpr float kShadowRayShortening = 1.0f - 1e-5f;
 
+std::vector<SceneTriangle> surfaceLightTriangles(const std::vector<SurfaceLight>& lights)
+{
+    std::vector<SceneTriangle> triangles;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::vector<glm::vec3> corners = lights[i].triangles();
+        for (std::size_t k = 0; k + 2 < corners.size(); k += 3) {
+            SceneTriangle t;
+            t.vertices = { corners[k], corners[k + 1], corners[k + 2] };
+            const glm::vec3 cross = glm::cross(corners[k + 1] - corners[k], corners[k + 2] - corners[k]);
+            t.area = 0.5f * glm::length(cross);
+            if (!(t.area > 0.0f) || !std::isfinite(t.area))
+                continue;
+            t.geometricNormal = cross / (2.0f * t.area);
+            t.normals = { t.geometricNormal, t.geometricNormal, t.geometricNormal };
+            t.material = int(i);
+            triangles.push_back(t);
+        }
+    }
+    return triangles;
+}
+
+std::vector<Material> surfaceLightMaterials(const std::vector<SurfaceLight>& lights)
+{
+    std::vector<Material> materials(lights.size());
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        materials[i].emission = lights[i].radiance;
+        materials[i].emission = materials[i].usableEmission();
+    }
+    return materials;
+}
+
 } // namespace
 
 PathTracer::PathTracer(const Scene& scene, const ReferenceSettings& settings)
     : m_geometry(scene)
     , m_emitters(m_geometry.triangles(), m_geometry.materials())
+    , m_surfaceTriangles(surfaceLightTriangles(scene.surfaceLights))
+    , m_surfaceMaterials(surfaceLightMaterials(scene.surfaceLights))
+    , m_surfaceEmitters(m_surfaceTriangles, m_surfaceMaterials)
     , m_pointLights(scene.pointLights)
     , m_maxBounces(std::max(0, settings.maxBounces))
     , m_rouletteStartBounce(std::max(1, settings.rouletteStartBounce))
 {
+    for (const SurfaceLight& light : scene.surfaceLights)
+        m_surfaceShadows.push_back(light.castsShadows);
     m_textures.reserve(scene.textures.size());
     for (const TextureImage& image : scene.textures)
         m_textures.emplace_back(image);
@@ -168,6 +204,9 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
             }
         }
 
+        if (!m_surfaceEmitters.isEmpty())
+            result += throughput * surfaceLightSample(position, origin, random, rayCount, lightContribution);
+
         const float lobeChoice = random.nextFloat();
         const glm::vec2 u(random.nextFloat(), random.nextFloat());
         const glm::vec3 next = bsdf.sample(lobeChoice, u);
@@ -187,6 +226,36 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
         direction = next;
     }
     return result;
+}
+
+glm::vec3 PathTracer::surfaceLightSample(const glm::vec3& position, const glm::vec3& origin, Pcg32& random,
+    std::uint64_t& rayCount, const std::function<glm::vec3(const glm::vec3&)>& reflected) const
+{
+    const glm::vec3 u(random.nextFloat(), random.nextFloat(), random.nextFloat());
+    const EmissiveTriangleSampler::Sample sample = m_surfaceEmitters.sample(u);
+    const SceneTriangle& emitter = m_surfaceTriangles[sample.triangle];
+    const glm::vec3 toLight = sample.position - position;
+    const float distanceSquared = glm::dot(toLight, toLight);
+    if (!(distanceSquared > 0.0f))
+        return glm::vec3(0.0f);
+    const glm::vec3 toLightUnit = toLight / std::sqrt(distanceSquared);
+    const float cosAtLight = -glm::dot(emitter.geometricNormal, toLightUnit);
+    if (!(cosAtLight > 0.0f))
+        return glm::vec3(0.0f); // emission is one-sided
+    const glm::vec3 bsdfCos = reflected(toLightUnit);
+    if (maxComponent(bsdfCos) <= 0.0f)
+        return glm::vec3(0.0f);
+    if (m_surfaceShadows[std::size_t(emitter.material)]) {
+        // The light is no surface: nothing at its sample stops the ray, so it need not stop short of it.
+        const glm::vec3 toTarget = sample.position - origin;
+        const float targetDistance = glm::length(toTarget);
+        ++rayCount;
+        if (targetDistance > 0.0f
+            && m_geometry.occluded(origin, toTarget / targetDistance, targetDistance * kShadowRayShortening))
+            return glm::vec3(0.0f);
+    }
+    const float lightPdf = sample.pdfArea * distanceSquared / cosAtLight;
+    return bsdfCos * m_surfaceMaterials[std::size_t(emitter.material)].emission / lightPdf;
 }
 
 } // namespace vct::render

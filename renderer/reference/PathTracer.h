@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace vct::render {
@@ -44,8 +45,17 @@ public:
 private:
     glm::vec3 albedoAt(const Material& material, const SceneTriangle& triangle, float u, float v) const;
 
+    /** Next-event estimation from the rectangle and disk lights, which no ray can hit: weight one, no MIS. */
+    glm::vec3 surfaceLightSample(const glm::vec3& position, const glm::vec3& origin, Pcg32& random,
+        std::uint64_t& rayCount, const std::function<glm::vec3(const glm::vec3&)>& reflected) const;
+
     EmbreeScene m_geometry;
     EmissiveTriangleSampler m_emitters;
+    std::vector<SceneTriangle>
+        m_surfaceTriangles; ///< the surface lights' triangles: sampled, never intersected
+    std::vector<Material> m_surfaceMaterials; ///< one per surface light, its radiance as emission
+    std::vector<bool> m_surfaceShadows; ///< per surface light: whether it casts shadows
+    EmissiveTriangleSampler m_surfaceEmitters;
     std::vector<LinearTexture> m_textures;
     std::vector<PointLight> m_pointLights;
     std::vector<DirectionalLight> m_directionalLights;

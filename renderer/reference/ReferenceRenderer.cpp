@@ -68,6 +68,12 @@ struct LocalFrame {
             light.position = toLocal(light.position);
             light.intensity *= scale * scale;
         }
+        // Radiance does not change with scale; the shape does.
+        for (SurfaceLight& light : local.surfaceLights) {
+            light.centre = toLocal(light.centre);
+            light.width *= scale;
+            light.height *= scale;
+        }
         return local;
     }
 

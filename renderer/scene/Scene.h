@@ -6,6 +6,7 @@
 #include "scene/Material.h"
 #include "scene/Mesh.h"
 #include "scene/PointLight.h"
+#include "scene/SurfaceLight.h"
 #include "scene/TextureImage.h"
 
 #include <vector>
@@ -19,6 +20,7 @@ struct Scene {
     std::vector<TextureImage> textures;
     std::vector<PointLight> pointLights;
     std::vector<DirectionalLight> directionalLights;
+    std::vector<SurfaceLight> surfaceLights; ///< Rectangle and disk area lights (no geometry).
     Camera camera; ///< The scene's suggested view.
 
     /** World-space bounds of all meshes (transforms applied). */

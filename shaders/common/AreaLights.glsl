@@ -15,7 +15,9 @@
 #define OPACITY_UNIT 15
 #endif
 
-layout(binding = AREA_LIGHT_UNIT) uniform samplerBuffer uAreaLights; // four rgba32f texels per light, then three per triangle
+// Four rgba32f texels per light, then three per triangle; each light's first texel holds in .w the texel of its
+// first triangle, as a frame may light with a prefix of the table's lights.
+layout(binding = AREA_LIGHT_UNIT) uniform samplerBuffer uAreaLights;
 layout(binding = OPACITY_UNIT) uniform sampler3D uOpacity;         // VoxelVolume::opacity, full mip chain
 uniform vec3 uOpacityOrigin;   // the voxel grid's corner, metres
 uniform float uOpacityExtent;  // its side, metres
@@ -109,6 +111,8 @@ float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
     vec4 areaCount = texelFetch(uAreaLights, 4 * i + 2);
     vec4 plane = texelFetch(uAreaLights, 4 * i + 3);
     bool planar = areaCount.z > 0.5;
+    if (areaCount.w < 0.5)
+        return 1.0; // a light that casts no shadows
     vec3 d = sphere.xyz - p;
     float distance = length(d);
     if (distance <= 1e-30)
@@ -127,11 +131,10 @@ float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
     return visibility;
 }
 
-// Triangle k of the table, its corners relative to p; false when its back faces p: emission is one-sided and
-// the front is counter-clockwise.
-bool emittingTriangle(int k, vec3 p, out vec3 a, out vec3 b, out vec3 c)
+// The triangle whose corners start at texel `base`, relative to p; false when its back faces p: emission is
+// one-sided and the front is counter-clockwise.
+bool emittingTriangle(int base, vec3 p, out vec3 a, out vec3 b, out vec3 c)
 {
-    int base = 4 * kAreaLightCount + 3 * k;
     a = texelFetch(uAreaLights, base).xyz - p;
     b = texelFetch(uAreaLights, base + 1).xyz - p;
     c = texelFetch(uAreaLights, base + 2).xyz - p;
@@ -146,7 +149,7 @@ float areaLightFactor(int i, vec3 p, vec3 n)
     float factor = 0.0;
     for (int k = 0; k < count; ++k) {
         vec3 a, b, c;
-        if (emittingTriangle(first + k, p, a, b, c))
+        if (emittingTriangle(first + 3 * k, p, a, b, c))
             factor += clippedTriangleIrradianceFactor(a, b, c, n);
     }
     return factor;
@@ -234,7 +237,7 @@ vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offse
         float solidAngle = 0.0;
         for (int k = 0; k < count; ++k) {
             vec3 a, b, c;
-            if (!emittingTriangle(first + k, p, a, b, c))
+            if (!emittingTriangle(first + 3 * k, p, a, b, c))
                 continue;
             vec3 normal = cross(b - a, c - a);
             float twiceArea = length(normal);

@@ -109,7 +109,7 @@ void AreaLightsTest::groupsConnectedEmitters()
     QCOMPARE(set.lights.size(), std::size_t(1));
     QCOMPARE(set.lights[0].triangleCount, 2);
     QVERIFY(std::abs(set.lights[0].area - 1.0f) < 1e-5f);
-    QVERIFY(set.analytic());
+    QVERIFY(set.meshEmittersAnalytic());
     scene.meshes.push_back(
         test::makeTriangles(test::quad({ 1, 1, 1 }, { 1.2f, 1, 1 }, { 1.2f, 1, 1.2f }, { 1, 1, 1.2f }), 1));
     set = render::AreaLightSet::fromScene(scene);

@@ -138,7 +138,7 @@ void RenderPlanTest::cameraOnlyReusesEverythingButPerPixelWork()
 void RenderPlanTest::movedLightKeepsVoxels()
 {
     m_scene.pointLights[0].position += glm::vec3(0.1f, -0.05f, 0.0f);
-    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
     planned();
     expectAction("shadow maps", "run");
     expectAction("voxelize", "reused");
@@ -150,7 +150,7 @@ void RenderPlanTest::movedLightKeepsVoxels()
 void RenderPlanTest::brighterLightKeepsShadowMaps()
 {
     m_scene.pointLights[0].intensity *= 1.5f;
-    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
     planned();
     expectAction("shadow maps", "reused");
     expectAction("voxelize", "reused");
@@ -248,7 +248,7 @@ void RenderPlanTest::ambientOcclusionOnlyWhenShown()
 
 void RenderPlanTest::noLightSourcesMeansNoIndirectLight()
 {
-    m_gl.renderer->setLights({}, {});
+    m_gl.renderer->setLights({}, {}, {});
     planned();
     expectAction("cone trace", "skipped");
     QVERIFY(pass("cone trace").reason.find("no lights and no emission") != std::string::npos);
@@ -288,7 +288,7 @@ void RenderPlanTest::secondBounceFollowsTheFirst()
         expectSameAsForced("camera move with bounces");
 
         m_scene.pointLights[0].position += glm::vec3(0.0f, -0.05f, 0.0f);
-        m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+        m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
         planned();
         expectAction("inject light", "run");
         expectAction("bounces", "run");
@@ -326,7 +326,7 @@ void RenderPlanTest::bouncesConvergeAcrossFrames()
     expectAction("bounces", "reused");
 
     m_scene.pointLights[0].intensity *= 1.2f;
-    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
     planned();
     expectAction("bounces", "run");
     const render::RadianceImage firstAfterEdit = m_plannedImage;
@@ -407,7 +407,7 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
     expectSameAsForced("camera turned both ways with the irradiance cache");
 
     m_scene.pointLights[0].position += glm::vec3(0.0f, -0.05f, 0.0f);
-    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
     planned();
     expectAction("inject light", "run");
     expectAction("irradiance cache", "run");

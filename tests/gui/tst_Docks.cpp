@@ -76,6 +76,7 @@ private slots:
     void renderSettingsPresetIsOneUndoStep();
     void renderSettingsResolutionCombo();
     void lightDockAddAndUndo();
+    void lightDockRectAndDiskShowTheirSize();
     void statsDockShowsRows();
 };
 
@@ -405,6 +406,72 @@ void TstDocks::lightDockAddAndUndo()
     QCOMPARE(int(document->state().lights.size()), lights);
     document->undoStack()->undo();
     QCOMPARE(int(document->state().lights.size()), lights + 1);
+}
+
+void TstDocks::lightDockRectAndDiskShowTheirSize()
+{
+    auto document = openCornell();
+    ui::LightDock dock;
+    dock.setDocument(document.get());
+    dock.show();
+    QTest::mouseClick(child<QPushButton>(&dock, "addPointLightButton"), Qt::LeftButton);
+    const int light = dock.currentLight();
+    auto* width = child<QDoubleSpinBox>(&dock, "areaWidth");
+    auto* height = child<QDoubleSpinBox>(&dock, "areaHeight");
+    auto* rotation = child<QDoubleSpinBox>(&dock, "areaRotation");
+    auto* intensity = child<QDoubleSpinBox>(&dock, "lightIntensity");
+    QVERIFY(!width->isVisible() && !height->isVisible() && !rotation->isVisible());
+
+    auto* type = child<QComboBox>(&dock, "lightType");
+    type->setCurrentIndex(type->findData(int(doc::LightType::Rect)));
+    QCOMPARE(document->state().lights[std::size_t(light)].type, doc::LightType::Rect);
+    QVERIFY(width->isVisible() && height->isVisible() && rotation->isVisible());
+    QVERIFY(!child<QDoubleSpinBox>(&dock, "spotInner")->isVisible());
+    QVERIFY(intensity->suffix().contains(QStringLiteral("W/(m² sr)")));
+    QCOMPARE(width->value(), 1.0);
+
+    // Edits of one light merge into one undo step (SetLightCommand::mergeWith): the switch to a rect too.
+    const int steps = document->undoStack()->count();
+    height->setValue(0.25);
+    QCOMPARE(document->state().lights[std::size_t(light)].areaHeight, 0.25f);
+    rotation->setValue(45.0);
+    QCOMPARE(document->state().lights[std::size_t(light)].areaRotationDeg, 45.0f);
+    QCOMPARE(document->undoStack()->count(), steps);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().lights[std::size_t(light)].type, doc::LightType::Point);
+    QCOMPARE(document->state().lights[std::size_t(light)].areaHeight, 1.0f);
+    QVERIFY(!width->isVisible() && !height->isVisible() && !rotation->isVisible());
+    QVERIFY(intensity->suffix().contains(QStringLiteral("W/sr")));
+    document->undoStack()->redo();
+    QVERIFY(height->isVisible());
+    QCOMPARE(height->value(), 0.25);
+    QCOMPARE(rotation->value(), 45.0);
+
+    // A disk has a diameter only.
+    type->setCurrentIndex(type->findData(int(doc::LightType::Disk)));
+    QVERIFY(width->isVisible() && !height->isVisible() && !rotation->isVisible());
+    width->setValue(0.5);
+    QCOMPARE(document->state().lights[std::size_t(light)].areaWidth, 0.5f);
+    QCOMPARE(document->buildRenderScene().surfaceLights.back().width, 0.5f);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().lights[std::size_t(light)].type, doc::LightType::Point);
+    QVERIFY(document->buildRenderScene().surfaceLights.empty());
+
+    // Added ones hang under the box's top, facing down, inside it.
+    const render::Aabb bounds = document->buildRenderScene().bounds();
+    QTest::mouseClick(child<QPushButton>(&dock, "addRectLightButton"), Qt::LeftButton);
+    const doc::LightNode rect = document->state().lights.back();
+    QCOMPARE(rect.type, doc::LightType::Rect);
+    QCOMPARE(rect.name, QStringLiteral("Rect light 1"));
+    QCOMPARE(rect.direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    QVERIFY(rect.position.y < bounds.max.y && rect.position.y > bounds.min.y);
+    QVERIFY(rect.areaWidth > 0.0f && rect.areaWidth <= bounds.size().x);
+    QTest::mouseClick(child<QPushButton>(&dock, "addDiskLightButton"), Qt::LeftButton);
+    QCOMPARE(document->state().lights.back().type, doc::LightType::Disk);
+    QVERIFY(width->isVisible() && !height->isVisible());
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QCOMPARE(document->state().lights.back().type, doc::LightType::Point);
 }
 
 void TstDocks::statsDockShowsRows()

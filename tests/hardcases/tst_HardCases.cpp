@@ -332,7 +332,7 @@ void HardCasesTest::extremeLightsAndMaterials()
         if (kind == 8)
             QVERIFY(lights.droppedTriangles == 2 && lights.lights.size() == 1);
         if (kind == 11)
-            QVERIFY(!lights.analytic() && !lights.note.empty());
+            QVERIFY(!lights.meshEmittersAnalytic() && !lights.note.empty());
     }
     if (kind == 2)
         QCOMPARE(io::ImageMetrics::meanLuminance(image), 0.0);
