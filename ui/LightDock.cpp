@@ -201,6 +201,19 @@ LightDock::LightDock(QWidget* parent)
     m_spotOuter->setObjectName(QStringLiteral("spotOuter"));
     m_spotInner->setToolTip(tr("Inner angle from the axis: full intensity within it"));
     m_spotOuter->setToolTip(tr("Outer angle from the axis: no light beyond it (at most 90°)"));
+    m_radius = makeLengthSpin(QStringLiteral("lightRadius"),
+        tr("Size of the light: a sphere of this radius softens its shadows; 0 is a point"));
+    m_radius->setMinimum(0.0);
+    m_angularDiameter = new QDoubleSpinBox;
+    m_angularDiameter->setObjectName(QStringLiteral("lightAngularDiameter"));
+    // The files refuse 90° and more: half the sky is no longer a light from one direction.
+    m_angularDiameter->setRange(0.0, 89.0);
+    m_angularDiameter->setDecimals(2);
+    m_angularDiameter->setSingleStep(0.1);
+    m_angularDiameter->setSuffix(QStringLiteral("°"));
+    m_angularDiameter->setToolTip(tr("Angular diameter: how wide the light's disk looks, which softens its "
+                                     "shadows without changing its irradiance: the "
+                                     "sun's is about 0.53°; 0 is a light from a single direction"));
     m_areaWidth = makeLengthSpin(
         QStringLiteral("areaWidth"), tr("Rects: the width in metres; disks: the diameter in metres"));
     m_areaHeight = makeLengthSpin(QStringLiteral("areaHeight"), tr("The rect's height in metres"));
@@ -241,6 +254,12 @@ LightDock::LightDock(QWidget* parent)
     form->addRow(m_directionLabel, m_directionRow);
     m_spotLabel = new QLabel(tr("Cone"));
     form->addRow(m_spotLabel, m_spotRow);
+    m_radiusLabel = new QLabel(tr("Radius"));
+    form->addRow(m_radiusLabel, m_radius);
+    // A short label: the form's label column sets the dock's width, and the viewport gives way to it.
+    m_angularDiameterLabel = new QLabel(tr("Size"));
+    m_angularDiameterLabel->setToolTip(m_angularDiameter->toolTip());
+    form->addRow(m_angularDiameterLabel, m_angularDiameter);
     m_areaWidthLabel = new QLabel(tr("Width"));
     form->addRow(m_areaWidthLabel, m_areaWidth);
     m_areaHeightLabel = new QLabel(tr("Height"));
@@ -306,6 +325,10 @@ LightDock::LightDock(QWidget* parent)
             l.spotInnerDeg = std::min(l.spotInnerDeg, l.spotOuterDeg);
         });
     });
+    connect(m_radius, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.radius = float(v); }); });
+    connect(m_angularDiameter, &QDoubleSpinBox::valueChanged, this,
+        [this](double v) { applyEdit([&](doc::LightNode& l) { l.angularDiameterDeg = float(v); }); });
     connect(m_areaWidth, &QDoubleSpinBox::valueChanged, this,
         [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaWidth = float(v); }); });
     connect(m_areaHeight, &QDoubleSpinBox::valueChanged, this,
@@ -439,9 +462,10 @@ void LightDock::loadLight()
     m_addRect->setEnabled(m_document);
     m_addDisk->setEnabled(m_document);
     if (!valid) {
-        for (QWidget* w : std::initializer_list<QWidget*> { m_directionLabel, m_directionRow, m_spotLabel,
-                 m_spotRow, m_areaWidthLabel, m_areaWidth, m_areaHeightLabel, m_areaHeight,
-                 m_areaRotationLabel, m_areaRotation })
+        for (QWidget* w :
+            std::initializer_list<QWidget*> { m_directionLabel, m_directionRow, m_spotLabel, m_spotRow,
+                m_radiusLabel, m_radius, m_angularDiameterLabel, m_angularDiameter, m_areaWidthLabel,
+                m_areaWidth, m_areaHeightLabel, m_areaHeight, m_areaRotationLabel, m_areaRotation })
             w->hide();
         return;
     }
@@ -472,6 +496,13 @@ void LightDock::loadLight()
     m_spotRow->setVisible(spot);
     setSpinValue(m_spotInner, double(l.spotInnerDeg));
     setSpinValue(m_spotOuter, double(l.spotOuterDeg));
+    const bool directional = l.type == doc::LightType::Directional;
+    m_radiusLabel->setVisible(l.isPointLike());
+    m_radius->setVisible(l.isPointLike());
+    setSpinValue(m_radius, double(l.radius));
+    m_angularDiameterLabel->setVisible(directional);
+    m_angularDiameter->setVisible(directional);
+    setSpinValue(m_angularDiameter, double(l.angularDiameterDeg));
     m_areaWidthLabel->setText(rect ? tr("Width") : tr("Diameter"));
     m_areaWidthLabel->setVisible(surface);
     m_areaWidth->setVisible(surface);

@@ -28,8 +28,9 @@ class SceneTreeModel;
  * rect / Add disk / Remove, and editors for the current light. Point lights have a position (metres) and an
  * intensity in W/sr; directional lights a direction (the way the light travels, need not be unit length) and
  * an irradiance in W/m²; rect and disk lights a centre, the direction their front face looks, a size in
- * metres (a disk's diameter), a rect's rotation about its direction, and a radiance in W/(m² sr). Every edit
- * is one Document::setLight / addLight / removeLight.
+ * metres (a disk's diameter), a rect's rotation about its direction, and a radiance in W/(m² sr). Point and
+ * spot lights also have a radius in metres and directional lights an angular diameter in degrees, which
+ * soften their shadows. Every edit is one Document::setLight / addLight / removeLight.
  */
 class LightDock : public QDockWidget {
     Q_OBJECT
@@ -87,6 +88,10 @@ private:
     QWidget* m_spotRow = nullptr;
     QDoubleSpinBox* m_spotInner = nullptr; ///< degrees from the axis
     QDoubleSpinBox* m_spotOuter = nullptr;
+    QLabel* m_radiusLabel = nullptr;
+    QDoubleSpinBox* m_radius = nullptr; ///< metres, point and spot lights only
+    QLabel* m_angularDiameterLabel = nullptr;
+    QDoubleSpinBox* m_angularDiameter = nullptr; ///< degrees, directional lights only
     QLabel* m_areaWidthLabel = nullptr; ///< "Width", or "Diameter" for disks
     QDoubleSpinBox* m_areaWidth = nullptr; ///< metres
     QLabel* m_areaHeightLabel = nullptr;

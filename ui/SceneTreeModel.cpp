@@ -42,13 +42,20 @@ QString lightQuantity(const doc::LightNode& light)
     return SceneTreeModel::tr("intensity %1 W/sr").arg(double(light.intensity));
 }
 
-/** ", 1 × 0.5 m" for a rect, ", 0.3 m across" for a disk, nothing for other lights. */
+/**
+ * ", 1 × 0.5 m" for a rect, ", 0.3 m across" for a disk, ", radius 0.05 m" or ", 0.53° across" for a point,
+ * spot or directional light with a size; nothing for one without.
+ */
 QString lightSize(const doc::LightNode& light)
 {
     if (light.type == doc::LightType::Rect)
         return SceneTreeModel::tr(", %1 × %2 m").arg(double(light.areaWidth)).arg(double(light.areaHeight));
     if (light.type == doc::LightType::Disk)
         return SceneTreeModel::tr(", %1 m across").arg(double(light.areaWidth));
+    if (light.isPointLike() && light.radius > 0.0f)
+        return SceneTreeModel::tr(", radius %1 m").arg(double(light.radius));
+    if (light.type == doc::LightType::Directional && light.angularDiameterDeg > 0.0f)
+        return SceneTreeModel::tr(", %1° across").arg(double(light.angularDiameterDeg));
     return {};
 }
 

@@ -94,6 +94,7 @@ std::vector<LightNode> lightsFromScene(
             l.type = LightType::Point;
         }
         l.position = p.position;
+        l.radius = p.radius;
         splitColor(p.intensity, &l.color, &l.intensity);
         l.castsShadows = p.castsShadows;
         lights.push_back(l);
@@ -105,6 +106,7 @@ std::vector<LightNode> lightsFromScene(
         l.name = QStringLiteral("Directional light %1").arg(++directionalNumber);
         l.type = LightType::Directional;
         l.direction = d.direction;
+        l.angularDiameterDeg = d.angularDiameterDeg;
         splitColor(d.irradiance, &l.color, &l.intensity);
         l.castsShadows = d.castsShadows;
         lights.push_back(l);

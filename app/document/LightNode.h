@@ -34,6 +34,11 @@ struct LightNode {
     float areaWidth = 1.0f; ///< Rects: metres along the width axis; disks: the diameter.
     float areaHeight = 1.0f; ///< Rects: metres along the height axis; unused by disks.
     float areaRotationDeg = 0.0f; ///< Rects: turn about the direction, degrees (SurfaceLight::rotationDeg).
+    /// Point and spot lights: metres, a sphere of the same intensity whose shadows are soft; 0 is a point.
+    float radius = 0.0f;
+    /// Directional lights: degrees across the disk the light comes from (the sun's is about 0.53), which
+    /// softens the shadows without changing the irradiance; 0 is a light from one direction. Below 90.
+    float angularDiameterDeg = 0.0f;
 
     bool operator==(const LightNode& other) const = default;
     /** Point and spot lights are point lights to the renderers. */
@@ -43,6 +48,7 @@ struct LightNode {
     render::PointLight pointLight() const
     {
         render::PointLight p { position, color * intensity, castsShadows };
+        p.radius = radius;
         if (type == LightType::Spot) {
             p.spotDirection
                 = glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
@@ -53,7 +59,9 @@ struct LightNode {
     }
     render::DirectionalLight directionalLight() const
     {
-        return { direction, color * intensity, castsShadows };
+        render::DirectionalLight d { direction, color * intensity, castsShadows };
+        d.angularDiameterDeg = angularDiameterDeg;
+        return d;
     }
     render::SurfaceLight surfaceLight() const
     {

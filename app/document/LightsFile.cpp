@@ -50,6 +50,26 @@ bool readPositiveLength(JsonFieldReader& reader, double value, const QString& fi
 }
 
 /**
+ * An optional light size, 0 when absent: files written before lights had a size keep their hard shadows.
+ * A negative size has no meaning and one too large for a float would reach the shaders as infinity.
+ */
+bool readOptionalSize(JsonFieldReader& reader, const QJsonObject& light, const QString& key,
+    const QString& fieldPath, float* size)
+{
+    if (!light.contains(key))
+        return true;
+    double value = 0.0;
+    if (!reader.readNumber(light, key, fieldPath, &value))
+        return false;
+    if (!std::isfinite(float(value)))
+        return reader.fail(fieldPath, QStringLiteral("%1 is too large").arg(value));
+    if (value < 0.0)
+        return reader.fail(fieldPath, QStringLiteral("must not be negative, found %1").arg(value));
+    *size = float(value);
+    return true;
+}
+
+/**
  * The fields of a "rect" or "disk" light after "type" and "shadows": position, direction, its size, rotation
  * and radiance. False with the reader's error on the first bad field.
  */
@@ -159,6 +179,9 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
                 reader.fail(prefix + QStringLiteral(".intensity"), QStringLiteral("must not be negative"));
                 return failed();
             }
+            if (!readOptionalSize(reader, light, QStringLiteral("radius"), prefix + QStringLiteral(".radius"),
+                    &point.radius))
+                return failed();
             if (type == QLatin1String("spot")) {
                 double inner = 0.0, outer = 0.0;
                 if (!reader.readVec3(light, QStringLiteral("direction"),
@@ -198,6 +221,17 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
             }
             if (!isNonNegative(directional.irradiance)) {
                 reader.fail(prefix + QStringLiteral(".irradiance"), QStringLiteral("must not be negative"));
+                return failed();
+            }
+            const QString diameterPath = prefix + QStringLiteral(".angular_diameter_deg");
+            if (!readOptionalSize(reader, light, QStringLiteral("angular_diameter_deg"), diameterPath,
+                    &directional.angularDiameterDeg))
+                return failed();
+            // A disk 90 degrees or more across is half the sky or more: no longer a light from one direction.
+            if (!(directional.angularDiameterDeg < 90.0f)) {
+                reader.fail(diameterPath,
+                    QStringLiteral("must be less than 90 degrees, found %1")
+                        .arg(directional.angularDiameterDeg));
                 return failed();
             }
             directionals.push_back(directional);

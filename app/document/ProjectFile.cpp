@@ -343,6 +343,19 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
         }
         if (l.isSurface() && !readSurfaceFields(r, o, path, l))
             return false;
+        // Optional, 0 when absent: projects saved before lights had a size keep their hard shadows.
+        if (l.isPointLike() && o.contains("radius")
+            && !r.readFloat(o, "radius", path + "radius", 0.0f, &l.radius))
+            return false;
+        if (l.type == LightType::Directional && o.contains("angular_diameter_deg")) {
+            if (!r.readFloat(
+                    o, "angular_diameter_deg", path + "angular_diameter_deg", 0.0f, &l.angularDiameterDeg))
+                return false;
+            // As in lights files: half the sky or more is no longer a light from one direction.
+            if (!(l.angularDiameterDeg < 90.0f))
+                return r.fail(path + "angular_diameter_deg",
+                    QStringLiteral("must be less than 90 degrees, found %1").arg(l.angularDiameterDeg));
+        }
         out.lights.push_back(l);
     }
     return true;
@@ -443,6 +456,10 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
             { "position", toArray(l.position) }, { "direction", toArray(l.direction) },
             { "color", toArray(l.color) }, { "intensity", double(l.intensity) },
             { "shadows", l.castsShadows } };
+        if (l.isPointLike())
+            light["radius"] = double(l.radius);
+        else if (l.type == LightType::Directional)
+            light["angular_diameter_deg"] = double(l.angularDiameterDeg);
         if (l.type == LightType::Spot) {
             light["inner_deg"] = double(l.spotInnerDeg);
             light["outer_deg"] = double(l.spotOuterDeg);

@@ -22,8 +22,9 @@ namespace vct::doc {
  * - lights: id, name, type (point|spot|directional|rect|disk), position (m; rects and disks: the centre),
  *   direction, color, intensity (W/sr, W/m^2 or, for rects and disks, radiance in W/(m^2 sr)), shadows; spots
  *   also inner_deg and outer_deg, rects size ([width, height], m) and rotation_deg, disks diameter (m), as
- *   in lights files (LightsFile). New light types came without a new version: an older reader refuses them
- *   naming the type, and every file it could read reads the same.
+ *   in lights files (LightsFile); point and spot lights radius (m), directional lights angular_diameter_deg,
+ *   both optional (0 when absent). New light types and fields came without a new version: an older reader
+ *   refuses a new type naming it and ignores the sizes, and every file it could read reads the same.
  * - camera: position, look_at, up, fov_y_deg, near_plane (m).
  * - settings: every RenderSettings key with its value as text, read back through RenderSettings::set.
  *

@@ -4,6 +4,7 @@
 #include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
 #include "gl/Framebuffer.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "scene/Aabb.h"
 
@@ -111,6 +112,7 @@ struct ShadowMaps {
     gl::Texture
         pointDepth; ///< depth32f cube map array: each face's perspective depth over [pointNear, pointFar].
     gl::Texture directionalDepth; ///< depth32f 2D array.
+    gl::Sampler rawDepth; ///< reads either map as plain depth (soft shadows' blocker search)
     gl::Framebuffer framebuffer;
     int size = 0;
     float pointNear = 1e-4f; ///< metres: the cube faces' near plane (depth 0)

@@ -4,7 +4,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 
 namespace vct::render {
 
@@ -13,11 +16,13 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     std::vector<glm::vec4> positions, intensities, spots, directions, irradiances;
+    std::vector<float> radii, tanHalves;
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
         positions.emplace_back(light.position, light.castsShadows && shadows.pointDepth ? 1.0f : 0.0f);
         intensities.emplace_back(light.intensity, light.cosInner());
         spots.emplace_back(light.spotDirection, light.cosOuter());
+        radii.push_back(std::isfinite(light.radius) ? std::max(light.radius, 0.0f) : 0.0f);
     }
     for (int i = 0; i < directionals; ++i) {
         const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
@@ -25,6 +30,10 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
             && std::size_t(i) < shadows.directionalMatrices.size();
         directions.emplace_back(light.direction, shadowed ? 1.0f : 0.0f);
         irradiances.emplace_back(light.irradiance, 0.0f);
+        const float diameter = std::isfinite(light.angularDiameterDeg)
+            ? std::clamp(light.angularDiameterDeg, 0.0f, 179.0f)
+            : 0.0f;
+        tanHalves.push_back(std::tan(glm::radians(0.5f * diameter)));
         if (shadowed)
             glProgramUniformMatrix4fv(program.id(),
                 program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()), 1, GL_FALSE,
@@ -37,11 +46,22 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     program.set("uPointShadowFar", shadows.pointFar);
     program.set("uDirectionalLightDirection", directions);
     program.set("uDirectionalLightIrradiance", irradiances);
+    program.set("uPointLightRadius", radii);
+    program.set("uDirectionalLightTanHalf", tanHalves);
     // Samplers must always see a texture of their type, even with no light of that kind.
-    if (shadows.pointDepth)
+    if (shadows.pointDepth) {
         shadows.pointDepth.bindUnit(8);
-    if (shadows.directionalDepth)
+        shadows.pointDepth.bindUnit(kPointDepthUnit);
+    }
+    if (shadows.directionalDepth) {
         shadows.directionalDepth.bindUnit(9);
+        shadows.directionalDepth.bindUnit(kDirectionalDepthUnit);
+    }
+    // The same maps again, read through a sampler without comparison (common/Lights.glsl).
+    if (shadows.rawDepth) {
+        shadows.rawDepth.bindUnit(kPointDepthUnit);
+        shadows.rawDepth.bindUnit(kDirectionalDepthUnit);
+    }
 }
 
 void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame)

@@ -10,6 +10,10 @@ namespace vct::render {
  */
 constexpr int kMaxPointLights = 8;
 constexpr int kMaxDirectionalLights = 4;
+/// Where shaders/common/Lights.glsl reads the shadow maps as raw depth (POINT_DEPTH_UNIT,
+/// DIRECTIONAL_DEPTH_UNIT).
+constexpr GLuint kPointDepthUnit = 16;
+constexpr GLuint kDirectionalDepthUnit = 17;
 
 /** Sets the uniforms and binds the shadow maps that shaders/common/Lights.glsl reads. */
 void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows);

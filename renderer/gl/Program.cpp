@@ -121,4 +121,10 @@ void Program::set(const char* name, const std::vector<glm::vec4>& v) const
         glProgramUniform4fv(id(), location(name), GLsizei(v.size()), glm::value_ptr(v[0]));
 }
 
+void Program::set(const char* name, const std::vector<float>& v) const
+{
+    if (!v.empty())
+        glProgramUniform1fv(id(), location(name), GLsizei(v.size()), v.data());
+}
+
 } // namespace vct::gl

@@ -43,6 +43,7 @@ public:
     void set(const char* name, const glm::mat3& v) const;
     void set(const char* name, const glm::mat4& v) const;
     void set(const char* name, const std::vector<glm::vec4>& v) const;
+    void set(const char* name, const std::vector<float>& v) const;
 
 private:
     Handle<deleteProgram> m_handle;

@@ -51,6 +51,8 @@ void ShadowMapPass::ensureTextures(
             = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
         shadows.pointDepth.setDepthComparison();
         shadows.directionalDepth.setDepthComparison();
+        if (!shadows.rawDepth)
+            shadows.rawDepth = gl::Sampler::createRawDepth();
         shadows.size = size;
         m_staticPoint = gl::Texture();
         m_staticDirectional = gl::Texture();

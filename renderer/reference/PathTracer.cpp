@@ -4,6 +4,8 @@
 #include "reference/RayOffset.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +31,21 @@ float maxComponent(const glm::vec3& v)
 
 /** Shadow rays stop this fraction short of their target, so they never reach the surface they aim at. */
 constexpr float kShadowRayShortening = 1.0f - 1e-5f;
+
+/**
+ * A direction uniform in solid angle within the cone about unit @p axis whose half-angle has cosine @p
+ * cosHalf (pdf 1 / (2 pi (1 - cosHalf))).
+ */
+glm::vec3 directionWithinCone(const glm::vec3& axis, float cosHalf, float u1, float u2)
+{
+    const float cosTheta = 1.0f - u1 * (1.0f - cosHalf);
+    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    const float phi = 2.0f * glm::pi<float>() * u2;
+    const glm::vec3 t = glm::normalize(std::abs(axis.x) < 0.9f ? glm::cross(axis, glm::vec3(1, 0, 0))
+                                                               : glm::cross(axis, glm::vec3(0, 1, 0)));
+    const glm::vec3 b = glm::cross(axis, t);
+    return glm::normalize(cosTheta * axis + sinTheta * (std::cos(phi) * t + std::sin(phi) * b));
+}
 
 std::vector<SceneTriangle> surfaceLightTriangles(const std::vector<SurfaceLight>& lights)
 {
@@ -81,8 +98,14 @@ PathTracer::PathTracer(const Scene& scene, const ReferenceSettings& settings)
     for (DirectionalLight light : scene.directionalLights) {
         light.direction = glm::normalize(light.direction);
         if (std::isfinite(light.direction.x) && std::isfinite(light.direction.y)
-            && std::isfinite(light.direction.z))
+            && std::isfinite(light.direction.z)) {
             m_directionalLights.push_back(light); // a zero direction points nowhere: no light
+            const float diameter = std::isfinite(light.angularDiameterDeg)
+                ? std::clamp(light.angularDiameterDeg, 0.0f, 179.0f)
+                : 0.0f;
+            m_directionalLights.back().angularDiameterDeg = diameter;
+            m_sunCosHalf.push_back(std::cos(glm::radians(0.5f * diameter)));
+        }
     }
 }
 
@@ -151,6 +174,11 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
             return bsdf.evaluate(toLight) * std::max(glm::dot(shadingNormal, toLight), 0.0f);
         };
         for (const PointLight& light : m_pointLights) {
+            if (light.radius > 0.0f) {
+                result += throughput
+                    * sphereLightSample(light, position, origin, random, rayCount, lightContribution);
+                continue;
+            }
             const glm::vec3 toLight = light.position - position;
             const float distanceSquared = glm::dot(toLight, toLight);
             if (!(distanceSquared > 0.0f))
@@ -169,7 +197,10 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
                 / distanceSquared;
         }
         for (const DirectionalLight& light : m_directionalLights) {
-            const glm::vec3 toLight = -light.direction;
+            const glm::vec3 toLight = light.angularDiameterDeg > 0.0f ? directionWithinCone(-light.direction,
+                                          m_sunCosHalf[std::size_t(&light - m_directionalLights.data())],
+                                          random.nextFloat(), random.nextFloat())
+                                                                      : -light.direction;
             const glm::vec3 reflected = lightContribution(toLight);
             if (maxComponent(reflected) <= 0.0f)
                 continue;
@@ -226,6 +257,38 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
         direction = next;
     }
     return result;
+}
+
+glm::vec3 PathTracer::sphereLightSample(const PointLight& light, const glm::vec3& position,
+    const glm::vec3& origin, Pcg32& random, std::uint64_t& rayCount,
+    const std::function<glm::vec3(const glm::vec3&)>& reflected) const
+{
+    const glm::vec3 toCentre = light.position - position;
+    const float distance2 = glm::dot(toCentre, toCentre);
+    const float radius2 = light.radius * light.radius;
+    if (!(distance2 > radius2))
+        return glm::vec3(0.0f); // inside the light: no surface of it faces this point
+    const float distance = std::sqrt(distance2);
+    const glm::vec3 axis = toCentre / distance;
+    // 1 - cos(theta_max) without the cancellation of two nearly equal numbers for a small, far light.
+    const float sin2Max = radius2 / distance2;
+    const float cosMax = std::sqrt(std::max(0.0f, 1.0f - sin2Max));
+    const float oneMinusCosMax = sin2Max / (1.0f + cosMax);
+    const glm::vec3 toLight = directionWithinCone(axis, cosMax, random.nextFloat(), random.nextFloat());
+    const glm::vec3 bsdfCos = reflected(toLight);
+    if (maxComponent(bsdfCos) <= 0.0f)
+        return glm::vec3(0.0f);
+    if (light.castsShadows) {
+        // Where the sampled ray meets the sphere.
+        const float along = glm::dot(toLight, toCentre);
+        const float hit = along - std::sqrt(std::max(0.0f, radius2 - (distance2 - along * along)));
+        ++rayCount;
+        if (m_geometry.occluded(origin, toLight, std::max(hit, 0.0f) * kShadowRayShortening))
+            return glm::vec3(0.0f);
+    }
+    // The sphere's radiance I / (pi r^2) over the cone's solid angle 2 pi (1 - cos theta_max).
+    const glm::vec3 radiance = light.intensity * light.spotFactor(-axis) / (glm::pi<float>() * radius2);
+    return bsdfCos * radiance * (2.0f * glm::pi<float>() * oneMinusCosMax);
 }
 
 glm::vec3 PathTracer::surfaceLightSample(const glm::vec3& position, const glm::vec3& origin, Pcg32& random,

@@ -45,6 +45,10 @@ public:
 private:
     glm::vec3 albedoAt(const Material& material, const SceneTriangle& triangle, float u, float v) const;
 
+    /** Next-event estimation from a point light with a radius: a direction uniform over the sphere's cone. */
+    glm::vec3 sphereLightSample(const PointLight& light, const glm::vec3& position, const glm::vec3& origin,
+        Pcg32& random, std::uint64_t& rayCount,
+        const std::function<glm::vec3(const glm::vec3&)>& reflected) const;
     /** Next-event estimation from the rectangle and disk lights, which no ray can hit: weight one, no MIS. */
     glm::vec3 surfaceLightSample(const glm::vec3& position, const glm::vec3& origin, Pcg32& random,
         std::uint64_t& rayCount, const std::function<glm::vec3(const glm::vec3&)>& reflected) const;
@@ -59,6 +63,7 @@ private:
     std::vector<LinearTexture> m_textures;
     std::vector<PointLight> m_pointLights;
     std::vector<DirectionalLight> m_directionalLights;
+    std::vector<float> m_sunCosHalf; ///< per directional light: the cosine of its angular radius
     int m_maxBounces;
     int m_rouletteStartBounce;
 };

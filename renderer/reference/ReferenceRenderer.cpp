@@ -67,6 +67,7 @@ struct LocalFrame {
         for (PointLight& light : local.pointLights) {
             light.position = toLocal(light.position);
             light.intensity *= scale * scale;
+            light.radius *= scale;
         }
         // Radiance does not change with scale; the shape does.
         for (SurfaceLight& light : local.surfaceLights) {

@@ -22,6 +22,10 @@ struct PointLight {
     glm::vec3 spotDirection { 0.0f, -1.0f, 0.0f }; ///< The way the spot points (unit length).
     float spotInnerDeg = 180.0f; ///< 180 and 180: an isotropic point light.
     float spotOuterDeg = 180.0f;
+    /// Metres: a sphere of this radius with the same intensity (radiance I / (pi r^2)), whose shadows are
+    /// soft. 0 is a point with a hard shadow filtered to the shadow map's texel. Its unshadowed light stays
+    /// the point's (I/d^2), exact while the receiver is a few radii away.
+    float radius = 0.0f;
 
     bool isSpot() const { return spotOuterDeg < 180.0f; }
     float cosOuter() const { return isSpot() ? std::cos(glm::radians(spotOuterDeg)) : -2.0f; }

@@ -4,6 +4,8 @@
 #define MAX_DIRECTIONAL_LIGHTS 4
 #define POINT_SHADOW_UNIT 8
 #define DIRECTIONAL_SHADOW_UNIT 9
+#define POINT_DEPTH_UNIT 16
+#define DIRECTIONAL_DEPTH_UNIT 17
 
 // Compile-time light counts (POINT_LIGHT_COUNT, DIRECTIONAL_LIGHT_COUNT: the composite and injection variants):
 // with a loop per kind and a count known to the compiler, llvmpipe unrolls each loop and drops the code of a
@@ -19,10 +21,50 @@ uniform float uPointShadowFar;
 uniform vec4 uDirectionalLightDirection[MAX_DIRECTIONAL_LIGHTS]; // travel direction, w = shadows
 uniform vec4 uDirectionalLightIrradiance[MAX_DIRECTIONAL_LIGHTS];
 uniform mat4 uDirectionalLightMatrix[MAX_DIRECTIONAL_LIGHTS];
+// Light sizes for soft shadows: a point light's radius (metres) and the tangent of a directional light's angular
+// radius; 0 keeps the hard shadow filtered to the texel.
+uniform float uPointLightRadius[MAX_POINT_LIGHTS];
+uniform float uDirectionalLightTanHalf[MAX_DIRECTIONAL_LIGHTS];
 // Comparison samplers (gl::Texture::setDepthComparison): each lookup is the bilinear average of the four nearest
 // texels' depth tests, so shadow edges are texel-area averages, as a reference image's are, not steps.
 layout(binding = POINT_SHADOW_UNIT) uniform samplerCubeArrayShadow uPointShadow;
 layout(binding = DIRECTIONAL_SHADOW_UNIT) uniform sampler2DArrayShadow uDirectionalShadow;
+// The same maps as raw depth (a sampler object without comparison), for the soft shadows' blocker search.
+layout(binding = POINT_DEPTH_UNIT) uniform samplerCubeArray uPointShadowDepth;
+layout(binding = DIRECTIONAL_DEPTH_UNIT) uniform sampler2DArray uDirectionalShadowDepth;
+
+// Soft shadows of lights with a size (percentage-closer soft shadows, Fernando 2005): the mean depth of the
+// blockers found around the receiver's direction sets the penumbra, light size x (receiver - blocker) /
+// blocker, and a percentage-closer filter of that width gives the share of the light the receiver sees. A
+// uniform disk kernel over a straight edge gives the same profile as a disk light behind it. Taps on a Vogel
+// spiral (uniform over the disk), the same at every pixel: no noise, and with each tap a bilinear comparison
+// the steps between taps stay below a 24th of the light.
+const int kSoftShadowTaps = 24;
+const float kGoldenAngle = 2.39996323;
+
+vec2 softShadowTap(int k)
+{
+    float r = sqrt((float(k) + 0.5) / float(kSoftShadowTaps));
+    float a = float(k) * kGoldenAngle;
+    return r * vec2(cos(a), sin(a));
+}
+
+// Window depth of a cube face for view depth z (the major-axis component), and back.
+float pointWindowDepth(float z)
+{
+    float n = uPointShadowNear, f = uPointShadowFar;
+    return f * (z - n) / (z * (f - n));
+}
+float pointViewDepth(float w)
+{
+    float n = uPointShadowNear, f = uPointShadowFar;
+    return f * n / (f - w * (f - n));
+}
+float majorAxis(vec3 v)
+{
+    vec3 a = abs(v);
+    return max(a.x, max(a.y, a.z));
+}
 
 // The share of point light i's intensity sent toward p: 1 for an isotropic light; for a spot, a smoothstep in
 // the cosine from its outer to its inner angle (scene/PointLight.h::spotFactor, the same function).
@@ -37,25 +79,113 @@ float spotFactor(int i, vec3 p)
 }
 
 // p is already pushed off the surface by the caller; the bias absorbs depth quantisation only.
-float pointLightVisibility(int i, vec3 p)
+float pointLightHardVisibility(int i, vec3 fromLight)
+{
+    float viewDepth = majorAxis(fromLight);
+    // The bias is in view depth (it absorbs depth quantisation only); the face's perspective projection then
+    // turns the biased depth into the window depth the map stores.
+    float biased = max(viewDepth - 1e-3 * uPointShadowFar, uPointShadowNear);
+    return texture(uPointShadow, vec4(fromLight, float(i)), pointWindowDepth(biased));
+}
+
+// A sphere light of radius R seen from p on a surface of normal n. Offsets are angles about the light's
+// centre (the cube map's directions); each tap compares against the receiver's tangent plane where the tap's
+// ray meets it, so a wide kernel does not shadow a tilted receiver with itself.
+float pointLightSoftVisibility(int i, vec3 p, vec3 n, float radius)
+{
+    vec3 light = uPointLightPosition[i].xyz;
+    vec3 fromLight = p - light;
+    float receiver = length(fromLight);
+    if (receiver <= radius)
+        return 1.0; // inside the light
+    vec3 axis = fromLight / receiver;
+    vec3 u = normalize(abs(axis.x) < 0.9 ? cross(axis, vec3(1.0, 0.0, 0.0)) : cross(axis, vec3(0.0, 1.0, 0.0)));
+    vec3 v = cross(axis, u);
+    float bias = 1e-3 * uPointShadowFar;
+    // Blockers between a tenth of the way and the receiver: nearer ones would ask for an unbounded search.
+    float nearest = max(0.1 * receiver, uPointShadowNear);
+    float searchAngle = min(radius * (receiver - nearest) / (receiver * nearest), 0.5);
+    float blockerSum = 0.0;
+    int blockers = 0;
+    for (int k = 0; k < kSoftShadowTaps; ++k) {
+        vec2 o = softShadowTap(k) * searchAngle;
+        vec3 dir = axis + o.x * u + o.y * v;
+        float stored = pointViewDepth(texture(uPointShadowDepth, vec4(dir, float(i))).r);
+        // The stored major-axis depth as a distance along the tap's direction.
+        float distance = stored * length(dir) / majorAxis(dir);
+        if (distance < receiver - bias) {
+            blockerSum += distance;
+            ++blockers;
+        }
+    }
+    if (blockers == 0)
+        return 1.0;
+    float blocker = blockerSum / float(blockers);
+    float kernel = clamp(radius * (receiver - blocker) / (blocker * receiver), 0.0, 0.5);
+    float lit = 0.0;
+    for (int k = 0; k < kSoftShadowTaps; ++k) {
+        vec2 o = softShadowTap(k) * kernel;
+        vec3 dir = normalize(axis + o.x * u + o.y * v);
+        float across = dot(dir, n);
+        float t = across < -1e-3 ? dot(fromLight, n) / across : receiver;
+        t = across < -1e-3 ? min(t, 2.0 * receiver) : receiver;
+        lit += pointLightHardVisibility(i, dir * t);
+    }
+    return lit / float(kSoftShadowTaps);
+}
+
+float pointLightVisibility(int i, vec3 p, vec3 n)
 {
     if (uPointLightPosition[i].w < 0.5)
         return 1.0;
-    vec3 fromLight = p - uPointLightPosition[i].xyz;
-    // The face that holds this direction is the one of its largest component; its view depth is that
-    // component, and the stored window depth inverts to it through the face's perspective projection.
-    vec3 a = abs(fromLight);
-    float viewDepth = max(a.x, max(a.y, a.z));
-    float n = uPointShadowNear;
-    float f = uPointShadowFar;
-    // The bias is in view depth (it absorbs depth quantisation only); the face's perspective projection then
-    // turns the biased depth into the window depth the map stores.
-    float biased = max(viewDepth - 1e-3 * f, n);
-    float reference = f * (biased - n) / (biased * (f - n));
-    return texture(uPointShadow, vec4(fromLight, float(i)), reference);
+    float radius = uPointLightRadius[i];
+    if (radius > 0.0)
+        return pointLightSoftVisibility(i, p, n, radius);
+    return pointLightHardVisibility(i, p - uPointLightPosition[i].xyz);
 }
 
-float directionalLightVisibility(int i, vec3 p)
+// A light of angular radius atan(tanHalf) along an orthographic map. The map's window coordinates are affine
+// in world space; its rows give metres per unit of window x, y and depth, and the receiver's plane as a depth
+// gradient in window coordinates.
+float directionalLightSoftVisibility(int i, vec3 coord, vec3 p, vec3 n, float tanHalf)
+{
+    mat4 m = uDirectionalLightMatrix[i];
+    // Window = 0.5 * clip + 0.5: rows of the linear part, halved.
+    vec3 rowX = 0.5 * vec3(m[0][0], m[1][0], m[2][0]);
+    vec3 rowY = 0.5 * vec3(m[0][1], m[1][1], m[2][1]);
+    vec3 rowZ = 0.5 * vec3(m[0][2], m[1][2], m[2][2]);
+    vec3 metresPerUnit = 1.0 / vec3(length(rowX), length(rowY), length(rowZ));
+    // The normal in window coordinates (inverse transpose of a rotation times a scale), then the plane's
+    // depth change per unit of window x and y, limited where the receiver is nearly edge-on.
+    vec3 nw = vec3(dot(rowX, n), dot(rowY, n), dot(rowZ, n)) * metresPerUnit * metresPerUnit;
+    vec2 gradient = abs(nw.z) > 1e-6 ? clamp(-nw.xy / nw.z, vec2(-4.0), vec2(4.0)) : vec2(0.0);
+    float bias = 2e-3;
+    // Blockers anywhere between the light's side of the map and the receiver.
+    vec2 search = vec2(coord.z * metresPerUnit.z * tanHalf) / metresPerUnit.xy;
+    search = min(search, vec2(0.05));
+    float blockerSum = 0.0;
+    int blockers = 0;
+    for (int k = 0; k < kSoftShadowTaps; ++k) {
+        vec2 o = softShadowTap(k) * search;
+        float stored = texture(uDirectionalShadowDepth, vec3(coord.xy + o, float(i))).r;
+        if (stored < coord.z + dot(gradient, o) - bias) {
+            blockerSum += stored;
+            ++blockers;
+        }
+    }
+    if (blockers == 0)
+        return 1.0;
+    float blocker = blockerSum / float(blockers);
+    vec2 kernel = min(vec2((coord.z - blocker) * metresPerUnit.z * tanHalf) / metresPerUnit.xy, vec2(0.05));
+    float lit = 0.0;
+    for (int k = 0; k < kSoftShadowTaps; ++k) {
+        vec2 o = softShadowTap(k) * kernel;
+        lit += texture(uDirectionalShadow, vec4(coord.xy + o, float(i), coord.z + dot(gradient, o) - bias));
+    }
+    return lit / float(kSoftShadowTaps);
+}
+
+float directionalLightVisibility(int i, vec3 p, vec3 n)
 {
     if (uDirectionalLightDirection[i].w < 0.5)
         return 1.0;
@@ -63,5 +193,8 @@ float directionalLightVisibility(int i, vec3 p)
     vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
     if (any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
         return 1.0;
+    float tanHalf = uDirectionalLightTanHalf[i];
+    if (tanHalf > 0.0)
+        return directionalLightSoftVisibility(i, coord, p, n, tanHalf);
     return texture(uDirectionalShadow, vec4(coord.xy, float(i), coord.z - 2e-3));
 }

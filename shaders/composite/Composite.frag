@@ -95,7 +95,7 @@ void main()
         vec3 toLight = normalize(d);
         float cosTheta = max(dot(n, toLight), 0.0);
         vec3 irradiance = uPointLightIntensity[i].rgb * spotFactor(i, p) / distance2
-            * pointLightVisibility(i, p + n * uShadowOffset) * cosTheta;
+            * pointLightVisibility(i, p + n * uShadowOffset, n) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY // normalised modified Phong
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
@@ -105,7 +105,7 @@ void main()
     for (int i = 0; i < kDirectionalLightCount; ++i) {
         vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);
         float cosTheta = max(dot(n, toLight), 0.0);
-        vec3 irradiance = uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, p + n * uShadowOffset) * cosTheta;
+        vec3 irradiance = uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, p + n * uShadowOffset, n) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);

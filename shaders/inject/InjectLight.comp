@@ -50,14 +50,14 @@ void main()
             float distance2 = max(dot(d, d), uPointShadowNear * uPointShadowNear);
             vec3 toLight = normalize(d);
             vec3 facing = facingLight(n, normalLength, toLight);
-            float visibility = pointLightVisibility(i, p + facing * uVoxelSize);
+            float visibility = pointLightVisibility(i, p + facing * uVoxelSize, facing);
             radiance += albedo.rgb / kPi * uPointLightIntensity[i].rgb * spotFactor(i, p) / distance2 * visibility
                 * max(dot(facing, toLight), 0.0);
         }
         for (int i = 0; i < kDirectionalLightCount; ++i) {
             vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);
             vec3 facing = facingLight(n, normalLength, toLight);
-            float visibility = directionalLightVisibility(i, p + facing * uVoxelSize);
+            float visibility = directionalLightVisibility(i, p + facing * uVoxelSize, facing);
             radiance += albedo.rgb / kPi * uDirectionalLightIrradiance[i].rgb * visibility * max(dot(facing, toLight), 0.0);
         }
         if (kAreaLightCount > 0) {

@@ -88,24 +88,6 @@ glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel)
     return camera.position + dir * (-camera.position.y / dir.y);
 }
 
-double meanRed(const render::RadianceImage& image)
-{
-    double sum = 0.0;
-    for (const glm::vec3& p : image.pixels)
-        sum += p.r;
-    return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
-}
-
-/** The 3 x 3 mean around a pixel: the path tracer's noise, not its edges, should decide. */
-double meanAround(const render::RadianceImage& image, glm::ivec2 pixel)
-{
-    double sum = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            sum += image.at(pixel.x + dx, pixel.y + dy).r / 9.0;
-    return sum;
-}
-
 } // namespace
 
 /**
@@ -220,7 +202,7 @@ void SurfaceLightRenderingTest::irradianceIsExact()
     settings.maxBounces = 1;
     render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize, settings);
     QVERIFY(reference.render(16));
-    const double ours = meanRed(image), theirs = meanRed(reference.image());
+    const double ours = test::meanRed(image), theirs = test::meanRed(reference.image());
     qInfo("image mean %.5f, path tracer %.5f", ours, theirs);
     QVERIFY(theirs > 0.0);
     QVERIFY2(std::abs(ours / theirs - 1.0) <= 0.02, qPrintable(QString::number(ours / theirs)));
@@ -244,14 +226,15 @@ void SurfaceLightRenderingTest::shadowFollowsThePathTracer()
     for (int i = 0; i <= 24; ++i) {
         const float x = -1.2f + 0.1f * float(i);
         const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, 0.0f }, kSize);
-        worst = std::max(worst, std::abs(meanAround(image, pixel) - meanAround(truth, pixel)) / unshadowed);
+        worst = std::max(
+            worst, std::abs(test::meanAround(image, pixel) - test::meanAround(truth, pixel)) / unshadowed);
     }
     const glm::ivec2 under = test::pixelOf(scene.camera, { 0.0f, 0.0f, 0.0f }, kSize);
     qInfo("largest difference across the shadow %.1f%% of the unshadowed radiance; under the blocker %.4f "
           "(unshadowed %.4f)",
-        100.0 * worst, meanAround(image, under), unshadowed);
+        100.0 * worst, test::meanAround(image, under), unshadowed);
     QVERIFY2(worst <= 0.13, qPrintable(QString("worst %1%").arg(100.0 * worst)));
-    QVERIFY(meanAround(image, under) < 0.5 * unshadowed);
+    QVERIFY(test::meanAround(image, under) < 0.5 * unshadowed);
 }
 
 void SurfaceLightRenderingTest::lightWithoutShadowsLightsThroughTheBlocker()
@@ -308,12 +291,12 @@ void SurfaceLightRenderingTest::lightBouncesLikeThePathTracers()
     std::filesystem::create_directories(out);
     io::ImageFile::write(out / "surface-light-room.png", image);
     io::ImageFile::write(out / "surface-light-room-reference.png", truth);
-    const double ratio = meanRed(image) / meanRed(truth);
+    const double ratio = test::meanRed(image) / test::meanRed(truth);
     const glm::ivec2 ceiling = test::pixelOf(scene.camera, { 0.7f, 2.0f, -0.7f }, kSize);
     qInfo(
         "relative MSE %.4f, mean / path tracer %.3f, indirect on the ceiling %.4f (path tracer's total %.4f)",
-        mse, ratio, meanAround(indirect, ceiling), meanAround(truth, ceiling));
-    QVERIFY(meanAround(indirect, ceiling) > 0.5 * meanAround(truth, ceiling));
+        mse, ratio, test::meanAround(indirect, ceiling), test::meanAround(truth, ceiling));
+    QVERIFY(test::meanAround(indirect, ceiling) > 0.5 * test::meanAround(truth, ceiling));
     QVERIFY2(std::abs(ratio - 1.0) <= 0.15, qPrintable(QString::number(ratio)));
     QVERIFY2(mse <= 0.03, qPrintable(QString::number(mse)));
 }

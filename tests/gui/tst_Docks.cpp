@@ -77,6 +77,7 @@ private slots:
     void renderSettingsResolutionCombo();
     void lightDockAddAndUndo();
     void lightDockRectAndDiskShowTheirSize();
+    void lightDockRadiusAndAngularDiameter();
     void statsDockShowsRows();
 };
 
@@ -472,6 +473,59 @@ void TstDocks::lightDockRectAndDiskShowTheirSize()
     document->undoStack()->undo();
     document->undoStack()->undo();
     QCOMPARE(document->state().lights.back().type, doc::LightType::Point);
+}
+
+void TstDocks::lightDockRadiusAndAngularDiameter()
+{
+    auto document = openCornell();
+    ui::LightDock dock;
+    dock.setDocument(document.get());
+    dock.show();
+    const int lights = int(document->state().lights.size());
+    auto* radius = child<QDoubleSpinBox>(&dock, "lightRadius");
+    auto* diameter = child<QDoubleSpinBox>(&dock, "lightAngularDiameter");
+
+    QTest::mouseClick(child<QPushButton>(&dock, "addPointLightButton"), Qt::LeftButton);
+    const int point = dock.currentLight();
+    QVERIFY(radius->isVisible() && !diameter->isVisible());
+    QCOMPARE(radius->value(), 0.0);
+    QVERIFY(radius->toolTip().contains(QStringLiteral("0 is a point")));
+
+    // Its own undo step after the add, and it reaches the renderer's light.
+    const int steps = document->undoStack()->count();
+    radius->setValue(0.2);
+    QCOMPARE(document->state().lights[std::size_t(point)].radius, 0.2f);
+    QCOMPARE(document->buildRenderScene().pointLights.back().radius, 0.2f);
+    QCOMPARE(document->undoStack()->count(), steps + 1);
+    ui::SceneTreeModel model;
+    model.setDocument(document.get());
+    QVERIFY(
+        model.data(model.indexForLight(point), Qt::ToolTipRole).toString().contains(QStringLiteral("0.2 m")));
+    document->undoStack()->undo();
+    QCOMPARE(int(document->state().lights.size()), lights + 1);
+    QCOMPARE(document->state().lights[std::size_t(point)].radius, 0.0f);
+    QCOMPARE(radius->value(), 0.0);
+    document->undoStack()->redo();
+    QCOMPARE(radius->value(), 0.2);
+
+    // A spot keeps the radius; a directional light has an angular diameter instead.
+    auto* type = child<QComboBox>(&dock, "lightType");
+    type->setCurrentIndex(type->findData(int(doc::LightType::Spot)));
+    QVERIFY(radius->isVisible() && !diameter->isVisible());
+    QCOMPARE(document->buildRenderScene().pointLights.back().radius, 0.2f);
+    QTest::mouseClick(child<QPushButton>(&dock, "addDirectionalLightButton"), Qt::LeftButton);
+    const int sun = dock.currentLight();
+    QCOMPARE(document->state().lights[std::size_t(sun)].type, doc::LightType::Directional);
+    QVERIFY(!radius->isVisible() && diameter->isVisible());
+    QVERIFY(diameter->toolTip().contains(QStringLiteral("0.53°")));
+    QCOMPARE(diameter->maximum(), 89.0);
+    diameter->setValue(0.53);
+    QCOMPARE(document->state().lights[std::size_t(sun)].angularDiameterDeg, 0.53f);
+    QCOMPARE(document->buildRenderScene().directionalLights.back().angularDiameterDeg, 0.53f);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().lights[std::size_t(sun)].angularDiameterDeg, 0.0f);
+    QCOMPARE(document->state().lights[std::size_t(sun)].type, doc::LightType::Directional);
+    QCOMPARE(diameter->value(), 0.0);
 }
 
 void TstDocks::statsDockShowsRows()

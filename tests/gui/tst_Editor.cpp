@@ -88,7 +88,9 @@ void EditorTest::initTestCase()
     settings.voxelResolution = 32; // small and quick on llvmpipe
     m_window->document()->setSettings(settings);
     m_window->document()->undoStack()->clear();
-    m_window->resize(960, 640);
+    // The editor's own first size (MainWindow): at 960 wide the docks left the viewport a 250-pixel strip,
+    // and one more row in a dock decided whether the short box's centre was still in it.
+    m_window->resize(1280, 800);
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
     QVERIFY2(waitForFrame(), "the viewport rendered no frame");

@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QProcessEnvironment>
 
 namespace vct::test {
@@ -86,6 +88,32 @@ glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size)
     const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg), 1.0f, 0.01f, 100.0f);
     const glm::vec3 p = glm::project(world, view, projection, glm::vec4(0, 0, size, size));
     return { int(p.x), size - 1 - int(p.y) };
+}
+
+double meanAround(const render::RadianceImage& image, glm::ivec2 pixel)
+{
+    double sum = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            sum += image.at(pixel.x + dx, pixel.y + dy).r / 9.0;
+    return sum;
+}
+
+double meanRed(const render::RadianceImage& image)
+{
+    double sum = 0.0;
+    for (const glm::vec3& p : image.pixels)
+        sum += p.r;
+    return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
+}
+
+QString writeFile(const QString& path, const QByteArray& bytes)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
 }
 
 } // namespace vct::test

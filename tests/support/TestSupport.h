@@ -1,9 +1,11 @@
 #pragma once
 
+#include "image/RadianceImage.h"
 #include "scene/Aabb.h"
 #include "scene/Camera.h"
 #include "scene/Mesh.h"
 
+#include <QByteArray>
 #include <QString>
 
 #include <vector>
@@ -25,5 +27,12 @@ std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
 render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 /** The pixel of a size x size RadianceImage (rows top to bottom) that camera sees world in. */
 glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size);
+/** The red channel's mean over the 3 x 3 pixels around @p pixel: a path tracer's noise, not its edges,
+ * decides. */
+double meanAround(const render::RadianceImage& image, glm::ivec2 pixel);
+/** The red channel's mean over the whole image. */
+double meanRed(const render::RadianceImage& image);
+/** Writes @p bytes to @p path (creating its folder) and returns the path; a test cannot go on if it fails. */
+QString writeFile(const QString& path, const QByteArray& bytes);
 
 } // namespace vct::test

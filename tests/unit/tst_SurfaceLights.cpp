@@ -20,15 +20,6 @@ using namespace vct;
 
 namespace {
 
-QString writeFile(const QString& path, const QByteArray& bytes)
-{
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
-
 /** (b - a) x (c - a) of each triangle: its normal, as long as twice its area. */
 std::vector<glm::vec3> crossProducts(const std::vector<glm::vec3>& corners)
 {
@@ -225,7 +216,7 @@ void SurfaceLightsTest::unusableLightsHaveNoTriangles()
 
 void SurfaceLightsTest::lightsFileReadsRectsAndDisks()
 {
-    const QString path = writeFile(test::outputDir() + QStringLiteral("/surface/read.lights.json"),
+    const QString path = test::writeFile(test::outputDir() + QStringLiteral("/surface/read.lights.json"),
         R"({"shadows": false, "lights": [
         {"type": "rect", "position": [0, 2, 0], "direction": [0, -2, 0], "size": [1.5, 0.5],
          "rotation_deg": 30, "radiance": [10, 8, 6], "shadows": true},
@@ -317,7 +308,7 @@ void SurfaceLightsTest::lightsFileRejectsImpossibleSurfaces()
 {
     QFETCH(QByteArray, light);
     QFETCH(QString, field);
-    const QString path = writeFile(test::outputDir() + QStringLiteral("/surface/bad.lights.json"),
+    const QString path = test::writeFile(test::outputDir() + QStringLiteral("/surface/bad.lights.json"),
         R"({"lights": [{"type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1]}, {)" + light + "}]}");
     render::Scene scene;
     scene.surfaceLights.push_back({});
@@ -372,9 +363,9 @@ void SurfaceLightsTest::documentSendsThemToSurfaceLights()
 void SurfaceLightsTest::sceneToDocumentAndBackIsLossless()
 {
     const QString dir = test::outputDir() + QStringLiteral("/surface/model");
-    const QString model
-        = writeFile(dir + QStringLiteral("/lit.obj"), "o Floor\nv -1 0 -1\nv 1 0 -1\nv 1 0 1\nf 1 3 2\n");
-    const QString lights = writeFile(dir + QStringLiteral("/lit.lights.json"),
+    const QString model = test::writeFile(
+        dir + QStringLiteral("/lit.obj"), "o Floor\nv -1 0 -1\nv 1 0 -1\nv 1 0 1\nf 1 3 2\n");
+    const QString lights = test::writeFile(dir + QStringLiteral("/lit.lights.json"),
         R"({"lights": [
         {"type": "rect", "position": [0, 2, 0.5], "direction": [0.1, -3, 0], "size": [1.5, 0.25],
          "rotation_deg": -40, "radiance": [10, 7.5, 0.5], "shadows": false},
