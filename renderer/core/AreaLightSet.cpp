@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -25,6 +26,62 @@ struct Triangle {
     glm::vec3 corners[3];
     int material = 0;
 };
+
+glm::vec3 centroid(const std::vector<std::size_t>& members, const std::vector<Triangle>& triangles)
+{
+    glm::vec3 sum(0.0f);
+    for (const std::size_t i : members)
+        sum += triangles[i].corners[0] + triangles[i].corners[1] + triangles[i].corners[2];
+    return sum / float(3 * members.size());
+}
+
+std::size_t distinctMaterials(
+    const std::vector<std::vector<std::size_t>>& clusters, const std::vector<Triangle>& triangles)
+{
+    std::vector<int> materials;
+    for (const std::vector<std::size_t>& members : clusters)
+        materials.push_back(triangles[members.front()].material);
+    std::sort(materials.begin(), materials.end());
+    return std::size_t(std::unique(materials.begin(), materials.end()) - materials.begin());
+}
+
+/**
+ * Merges the nearest clusters of one material (one radiance per light) until at most `room` are left; false
+ * when the materials alone are more than that. The light of a cluster stays exact without shadows (its
+ * triangles' irradiance is summed), only its visibility is traced toward the cluster as one light.
+ */
+bool clusterEmitters(
+    std::vector<std::vector<std::size_t>>& clusters, const std::vector<Triangle>& triangles, std::size_t room)
+{
+    if (clusters.size() <= room)
+        return true;
+    if (distinctMaterials(clusters, triangles) > room)
+        return false;
+    std::vector<glm::vec3> centres;
+    for (const std::vector<std::size_t>& members : clusters)
+        centres.push_back(centroid(members, triangles));
+    while (clusters.size() > room) {
+        std::size_t bestA = 0, bestB = 0;
+        float best = std::numeric_limits<float>::max();
+        for (std::size_t a = 0; a < clusters.size(); ++a)
+            for (std::size_t b = a + 1; b < clusters.size(); ++b) {
+                if (triangles[clusters[a].front()].material != triangles[clusters[b].front()].material)
+                    continue;
+                const glm::vec3 d = centres[a] - centres[b];
+                const float distance2 = glm::dot(d, d);
+                if (distance2 < best) {
+                    best = distance2;
+                    bestA = a;
+                    bestB = b;
+                }
+            }
+        clusters[bestA].insert(clusters[bestA].end(), clusters[bestB].begin(), clusters[bestB].end());
+        centres[bestA] = centroid(clusters[bestA], triangles);
+        clusters.erase(clusters.begin() + std::ptrdiff_t(bestB));
+        centres.erase(centres.begin() + std::ptrdiff_t(bestB));
+    }
+    return true;
+}
 
 } // namespace
 
@@ -136,13 +193,20 @@ void AreaLightSet::addEmitters(const Scene& scene, float weld)
     for (std::size_t i = 0; i < emitting.size(); ++i)
         groups[findRoot(parent, int(i))].push_back(i);
     const std::size_t lightRoom = std::size_t(kMaxLights) - lights.size();
-    if (groups.size() > lightRoom) {
-        emissiveNote = std::to_string(groups.size()) + " separate emitters, more than the "
+    std::vector<std::vector<std::size_t>> clusters;
+    for (auto& [root, members] : groups)
+        clusters.push_back(std::move(members));
+    const std::size_t separate = clusters.size();
+    if (!clusterEmitters(clusters, emitting, lightRoom)) {
+        emissiveNote = std::to_string(separate) + " separate emitters of "
+            + std::to_string(distinctMaterials(clusters, emitting)) + " emissions, more than the "
             + std::to_string(lightRoom)
             + " lit as area lights: their light reaches surfaces through the voxels only";
         return;
     }
-    for (const auto& [root, members] : groups) {
+    if (clusters.size() < separate)
+        clusteredEmitters = separate;
+    for (const std::vector<std::size_t>& members : clusters) {
         std::vector<glm::vec3> corners;
         for (const std::size_t i : members)
             corners.insert(corners.end(), std::begin(emitting[i].corners), std::end(emitting[i].corners));

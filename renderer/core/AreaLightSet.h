@@ -48,6 +48,9 @@ struct AreaLightSet {
     std::size_t emissiveTriangles = 0; ///< in the scene, with a positive, finite emission
     std::size_t droppedTriangles = 0; ///< of those, degenerate or non-finite (no area to emit from)
     std::size_t droppedSurfaceLights = 0; ///< zero-sized, non-finite or beyond the limits
+    /// 0, or how many separate emitters were merged into fewer lights (nearest first, one material each) to
+    /// fit kMaxLights: their light stays exact, their shadows are traced toward each cluster as one light.
+    std::size_t clusteredEmitters = 0;
     std::string note; ///< empty, or what is not lit as an area light, and why
     std::string emissiveNote; ///< empty, or why the emissive triangles are not in the set
 

@@ -95,6 +95,10 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
     }
     if (FrameRules::areaLightsUsed(frame))
         reason += "; " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
+    const AreaLightSet& areaLights = frame.scene.areaLights();
+    if (FrameRules::emittersAsAreaLights(frame) && areaLights.clusteredEmitters > 0)
+        reason += " (" + std::to_string(areaLights.clusteredEmitters) + " separate emitters merged into "
+            + std::to_string(areaLights.emitterLightCount()) + ", each shadowed as one)";
     if (!frame.scene.areaLights().note.empty())
         reason += "; " + frame.scene.areaLights().note;
     if (!FrameRules::emissionNeeded(frame))

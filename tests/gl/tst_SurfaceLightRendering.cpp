@@ -75,19 +75,6 @@ double quadratureIrradiance(const glm::dvec3& p, bool disk)
     return kRadiance * sum;
 }
 
-/** Where the ray through the centre of @p pixel meets the floor. */
-glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel)
-{
-    const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    const float t = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
-    const float nx = 2.0f * (float(pixel.x) + 0.5f) / float(kSize) - 1.0f;
-    const float ny = 1.0f - 2.0f * (float(pixel.y) + 0.5f) / float(kSize);
-    const glm::vec3 dir = glm::normalize(forward + right * (nx * t) + up * (ny * t));
-    return camera.position + dir * (-camera.position.y / dir.y);
-}
-
 } // namespace
 
 /**
@@ -189,7 +176,7 @@ void SurfaceLightRenderingTest::irradianceIsExact()
     for (const float x : { -1.0f, 0.0f, 1.0f })
         for (const float z : { -1.0f, 0.0f, 1.0f }) {
             const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, z }, kSize);
-            const glm::vec3 onFloor = floorPointOf(scene.camera, pixel);
+            const glm::vec3 onFloor = test::floorPointOf(scene.camera, pixel, kSize);
             const double expected
                 = kAlbedo / glm::pi<double>() * quadratureIrradiance(glm::dvec3(onFloor), disk);
             const double actual = image.at(pixel.x, pixel.y).r;
@@ -245,7 +232,7 @@ void SurfaceLightRenderingTest::lightWithoutShadowsLightsThroughTheBlocker()
     const render::RadianceImage image = render(scene, render::DebugView::Direct);
     const glm::ivec2 under = test::pixelOf(scene.camera, { 0.0f, 0.0f, 0.0f }, kSize);
     const double expected = kAlbedo / glm::pi<double>()
-        * quadratureIrradiance(glm::dvec3(floorPointOf(scene.camera, under)), false);
+        * quadratureIrradiance(glm::dvec3(test::floorPointOf(scene.camera, under, kSize)), false);
     const double actual = image.at(under.x, under.y).r;
     QVERIFY2(std::abs(actual / expected - 1.0) <= 0.01, qPrintable(QString::number(actual / expected)));
 }

@@ -90,6 +90,18 @@ glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size)
     return { int(p.x), size - 1 - int(p.y) };
 }
 
+glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size)
+{
+    const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float t = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const float nx = 2.0f * (float(pixel.x) + 0.5f) / float(size) - 1.0f;
+    const float ny = 1.0f - 2.0f * (float(pixel.y) + 0.5f) / float(size);
+    const glm::vec3 dir = glm::normalize(forward + right * (nx * t) + up * (ny * t));
+    return camera.position + dir * (-camera.position.y / dir.y);
+}
+
 double meanAround(const render::RadianceImage& image, glm::ivec2 pixel)
 {
     double sum = 0.0;

@@ -27,6 +27,8 @@ std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
 render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 /** The pixel of a size x size RadianceImage (rows top to bottom) that camera sees world in. */
 glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size);
+/** Where the ray through the centre of @p pixel (of a size x size image) meets the plane y = 0. */
+glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size);
 /** The red channel's mean over the 3 x 3 pixels around @p pixel: a path tracer's noise, not its edges,
  * decides. */
 double meanAround(const render::RadianceImage& image, glm::ivec2 pixel);
