@@ -25,6 +25,8 @@
 #include <QFileInfo>
 #include <QFutureWatcher>
 #include <QGuiApplication>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -173,7 +175,7 @@ void MainWindow::buildMenus()
     file->addAction(tr("&Import model..."), QKeySequence(tr("Ctrl+I")), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Import model"), QString(), kModelFilter);
         if (!path.isEmpty())
-            importModel(path);
+            importModelAskingUnit(path);
     });
     file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export image"),
@@ -229,7 +231,7 @@ void MainWindow::buildMenus()
     });
 }
 
-void MainWindow::openInitial(const QString& specOrProject)
+void MainWindow::openInitial(const QString& specOrProject, float unitScale)
 {
     const QString recovery = recoveryPath();
     if (QFileInfo::exists(recovery) && dialogsAllowed()) {
@@ -243,7 +245,7 @@ void MainWindow::openInitial(const QString& specOrProject)
     QString error;
     const bool ok = specOrProject.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)
         ? m_document->openProject(specOrProject, &error)
-        : m_document->newFromScene(specOrProject, &error);
+        : m_document->newFromScene(specOrProject, &error, unitScale);
     if (!ok) {
         showError(tr("Open"), error);
         m_document->newFromScene(QStringLiteral("builtin:default"), &error);
@@ -309,7 +311,49 @@ bool MainWindow::saveAs()
     return saveProjectAs(path);
 }
 
-bool MainWindow::importModel(const QString& path)
+bool MainWindow::askUnitScale(const QString& path, float* unitScale)
+{
+    *unitScale = 1.0f;
+    if (!dialogsAllowed())
+        return true;
+    // Models carry no unit (OBJ has none; glTF is in metres but many exports ignore it), so the user says.
+    const std::vector<std::pair<QString, float>> units
+        = { { tr("Metres"), 1.0f }, { tr("Centimetres (0.01 m)"), 0.01f },
+              { tr("Millimetres (0.001 m)"), 0.001f }, { tr("Inches (0.0254 m)"), 0.0254f } };
+    QStringList items;
+    for (const auto& unit : units)
+        items << unit.first;
+    items << tr("Custom factor...");
+    bool ok = false;
+    const QString item = QInputDialog::getItem(this, tr("Import model"),
+        tr("One unit of %1 is:").arg(QFileInfo(path).fileName()), items, 0, false, &ok);
+    if (!ok)
+        return false;
+    const qsizetype index = items.indexOf(item);
+    if (index >= 0 && std::size_t(index) < units.size()) {
+        *unitScale = units[std::size_t(index)].second;
+        return true;
+    }
+    // Text rather than a spin box: factors such as 1e-6 need more decimals than a spin box shows.
+    const QString text = QInputDialog::getText(
+        this, tr("Import model"), tr("Metres per model unit:"), QLineEdit::Normal, QStringLiteral("1"), &ok);
+    if (!ok)
+        return false;
+    if (const QString problem = doc::SceneLoader::parseUnitScale(text, unitScale); !problem.isEmpty()) {
+        showError(tr("Import model"), tr("Unit scale: %1").arg(problem));
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::importModelAskingUnit(const QString& path)
+{
+    float unitScale = 1.0f;
+    if (askUnitScale(path, &unitScale))
+        importModel(path, unitScale);
+}
+
+bool MainWindow::importModel(const QString& path, float unitScale)
 {
     // Assimp may take seconds on a big model: it runs on a worker thread while a dialog shows progress.
     // Cancel closes the dialog at once and throws the result away when the worker finishes (Assimp has no
@@ -326,9 +370,9 @@ bool MainWindow::importModel(const QString& path)
     QEventLoop loop;
     connect(&watcher, &QFutureWatcher<Loaded>::finished, &loop, &QEventLoop::quit);
     connect(&progress, &QProgressDialog::canceled, &loop, &QEventLoop::quit);
-    watcher.setFuture(QtConcurrent::run([path] {
+    watcher.setFuture(QtConcurrent::run([path, unitScale] {
         Loaded loaded;
-        loaded.ok = doc::SceneLoader::load(path, loaded.scene, &loaded.error);
+        loaded.ok = doc::SceneLoader::load(path, loaded.scene, &loaded.error, nullptr, unitScale);
         return loaded;
     }));
     loop.exec();
@@ -346,7 +390,7 @@ bool MainWindow::importModel(const QString& path)
         showError(tr("Import model"), loaded.error);
         return false;
     }
-    m_document->addImportedModel(path, std::move(loaded.scene));
+    m_document->addImportedModel(path, std::move(loaded.scene), unitScale);
     statusBar()->showMessage(tr("Imported %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }
@@ -411,7 +455,7 @@ void MainWindow::dropEvent(QDropEvent* event)
             if (maybeSave())
                 openProject(path);
         } else if (isModelFile(path)) {
-            importModel(path);
+            importModelAskingUnit(path);
         }
     }
 }
@@ -471,7 +515,8 @@ void MainWindow::autosave()
         return;
     QString error;
     // The recovery copy is written beside the settings, never over the user's file.
-    if (!doc::ProjectFile::save(recoveryPath(), m_document->state(), &error))
+    // With the document's model root, as recoverProject() reads it back through openProject().
+    if (!doc::ProjectFile::save(recoveryPath(), m_document->state(), &error, m_document->modelRoot()))
         statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 5000);
 }
 

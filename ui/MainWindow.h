@@ -33,8 +33,11 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /** Opens a project (.vctproj) or starts from a scene spec; offers recovery after a crash first. */
-    void openInitial(const QString& specOrProject);
+    /**
+     * Opens a project (.vctproj) or starts from a scene spec; offers recovery after a crash first.
+     * `unitScale` is metres per unit of a model file.
+     */
+    void openInitial(const QString& specOrProject, float unitScale = 1.0f);
     doc::Document* document() const { return m_document; }
     ViewportWidget* viewport() const { return m_viewport; }
     MaterialDock* materialDock() const { return m_materialDock; }
@@ -59,7 +62,8 @@ public:
 
     bool openProject(const QString& path);
     bool saveProjectAs(const QString& path);
-    bool importModel(const QString& path);
+    /** Imports on a worker thread behind a progress dialog; `unitScale` is metres per model unit. */
+    bool importModel(const QString& path, float unitScale = 1.0f);
     bool exportImage(const QString& path);
 
 protected:
@@ -71,6 +75,10 @@ private:
     void buildMenus();
     void buildDocks();
     bool maybeSave();
+    /** Asks the metres in one unit of the model at `path` (1 without dialogs); false if cancelled. */
+    bool askUnitScale(const QString& path, float* unitScale);
+    /** File > Import model and a dropped model: asks the unit, then imports. */
+    void importModelAskingUnit(const QString& path);
     bool save();
     bool saveAs();
     void showError(const QString& title, const QString& message);

@@ -9,6 +9,7 @@
 #include "core/Renderer.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
+#include "document/ProjectFile.h"
 #include "document/SceneLoader.h"
 #include "imageio/ImageFile.h"
 #include "imageio/ImageMetrics.h"
@@ -192,22 +193,50 @@ int RenderCommand::run(int argc, char** argv)
         QStringLiteral("--reference: random seed (default 0); same seed, same image."), QStringLiteral("S"));
     const QCommandLineOption threadsOption(QStringLiteral("threads"),
         QStringLiteral("--reference: worker threads (default: all cores)."), QStringLiteral("T"));
+    const QCommandLineOption unitScaleOption(QStringLiteral("unit-scale"),
+        QStringLiteral("Metres per unit of a model file SCENE (0.01 for centimetres, 0.001 for millimetres); "
+                       "its NAME.lights.json and NAME.camera.json are in its units too; --camera and "
+                       "--lights files stay in metres. Default 1."),
+        QStringLiteral("S"));
+    const QCommandLineOption sceneRootOption(QStringLiteral("scene-root"),
+        QStringLiteral("The folder a project's relative model paths resolve against, instead of the "
+                       "project's (default: $%1 when set).")
+            .arg(QLatin1String(doc::ProjectFile::kModelRootVariable)),
+        QStringLiteral("DIR"));
     parser.addOptions({ cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption,
         setOption, statsOption, framesOption, checkFiniteOption, glOption, referenceOption, sppOption,
-        maxBouncesOption, seedOption, threadsOption });
+        maxBouncesOption, seedOption, threadsOption, unitScaleOption, sceneRootOption });
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 1)
         return fail(1, QStringLiteral("expected exactly one SCENE argument (see --help)"));
     const QString sceneSpec = positional.front();
+    const bool isProject = sceneSpec.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive);
+    float unitScale = 1.0f;
+    if (parser.isSet(unitScaleOption)) {
+        if (isProject)
+            return fail(1,
+                QStringLiteral("--unit-scale applies to a model file; a project gives each of its sources "
+                               "its own \"unit_scale\""));
+        if (sceneSpec.startsWith(QStringLiteral("builtin:")))
+            return fail(
+                1, QStringLiteral("--unit-scale applies to a model file; built-in scenes are in metres"));
+        if (const QString problem
+            = doc::SceneLoader::parseUnitScale(parser.value(unitScaleOption), &unitScale);
+            !problem.isEmpty())
+            return fail(1, QStringLiteral("--unit-scale: %1").arg(problem));
+    }
+    if (parser.isSet(sceneRootOption) && !isProject)
+        std::fprintf(
+            stderr, "vct-render: warning: --scene-root is ignored: only a project's model paths use it\n");
 
     render::Scene scene;
     QString error;
     doc::SceneLoadInfo info;
     render::RenderSettings settings;
     // A project brings its own settings and camera; --set and --camera still override them.
-    if (!loadSceneInput(sceneSpec, scene, settings, info, &error))
+    if (!loadSceneInput(sceneSpec, scene, settings, info, &error, unitScale, parser.value(sceneRootOption)))
         return fail(1, error);
     QStringList assignments = parser.values(setOption);
     if (parser.isSet(voxelOption))

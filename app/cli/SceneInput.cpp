@@ -3,22 +3,46 @@
 #include "document/CameraFile.h"
 #include "document/Document.h"
 #include "document/LightsFile.h"
+#include "document/ProjectFile.h"
 #include "document/SceneLoader.h"
+
+#include <QFileInfo>
 
 namespace vct::cli {
 
 bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSettings& settings,
-    doc::SceneLoadInfo& info, QString* error)
+    doc::SceneLoadInfo& info, QString* error, float unitScale, const QString& sceneRoot)
 {
     if (spec.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)) {
+        auto fail = [&](const QString& problem) {
+            if (error)
+                *error = problem;
+            return false;
+        };
+        if (unitScale != 1.0f)
+            return fail(
+                QStringLiteral("%1: a unit scale applies to a model file; a project gives each source "
+                               "its own (sources[i].unit_scale)")
+                    .arg(spec));
+        // The environment serves every command sharing this function, vct-bench's too, without an option
+        // each.
+        const bool fromOption = !sceneRoot.isEmpty();
+        const QString root
+            = fromOption ? sceneRoot : qEnvironmentVariable(doc::ProjectFile::kModelRootVariable);
+        if (!root.isEmpty() && !QFileInfo(root).isDir())
+            return fail(QStringLiteral("the scene root '%1' (from %2) is not a folder")
+                            .arg(root,
+                                fromOption ? QStringLiteral("--scene-root")
+                                           : QLatin1String(doc::ProjectFile::kModelRootVariable)));
         doc::Document project;
+        project.setModelRoot(root);
         if (!project.openProject(spec, error))
             return false;
         scene = project.buildRenderScene();
         settings = project.state().settings;
         return true;
     }
-    return doc::SceneLoader::load(spec, scene, error, &info);
+    return doc::SceneLoader::load(spec, scene, error, &info, unitScale);
 }
 
 QString applySettingAssignments(const QStringList& assignments, render::RenderSettings& settings)

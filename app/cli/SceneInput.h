@@ -12,9 +12,12 @@ namespace vct::cli {
 /**
  * Loads what a command line names: a .vctproj project (its scene, camera and settings), builtin:NAME or a
  * model file (with sibling NAME.lights.json / NAME.camera.json). Settings are only replaced by a project's.
+ * `unitScale` is metres per unit of a model file (a project's sources carry their own, a built-in scene is in
+ * metres). A project's relative model paths resolve against `sceneRoot`, or when it is empty against
+ * $VCT_SCENE_ROOT, or when that is unset against the project's folder.
  */
 bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSettings& settings,
-    doc::SceneLoadInfo& info, QString* error);
+    doc::SceneLoadInfo& info, QString* error, float unitScale = 1.0f, const QString& sceneRoot = QString());
 
 /** What a command renders from: the camera and the image size. */
 struct ViewInput {

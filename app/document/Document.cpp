@@ -135,6 +135,19 @@ std::vector<LightNode> lightsFromScene(
     return lights;
 }
 
+/**
+ * A source's materials as the document keeps them: texture indices moved past the `textureBase` textures of
+ * the sources before it, matching the concatenation in Document::buildRenderScene().
+ */
+std::vector<render::Material> materialsFromScene(const render::Scene& scene, std::size_t textureBase)
+{
+    std::vector<render::Material> materials = scene.materials;
+    for (render::Material& m : materials)
+        if (m.albedoTexture >= 0)
+            m.albedoTexture += int(textureBase);
+    return materials;
+}
+
 /** One node per mesh of `scene`, drawing from `source`, material indices shifted by `materialOffset`. */
 std::vector<SceneNode> nodesFromScene(
     const render::Scene& scene, int source, int materialOffset, quint64* nextId)
@@ -167,15 +180,15 @@ Document::~Document()
     m_undoStack.clear();
 }
 
-bool Document::newFromScene(const QString& spec, QString* error)
+bool Document::newFromScene(const QString& spec, QString* error, float unitScale)
 {
-    const QString source = normalizedSpec(spec);
+    const SceneSource source { normalizedSpec(spec), unitScale };
     render::Scene scene;
-    if (!SceneLoader::load(source, scene, error))
+    if (!SceneLoader::load(source.spec, scene, error, nullptr, unitScale))
         return false;
 
     DocumentState state;
-    state.sources.push_back({ source });
+    state.sources.push_back(source);
     state.nodes = nodesFromScene(scene, 0, 0, &state.nextId);
     // Source 0's textures come first in the concatenation, so its texture indices stand as they are.
     state.materials = scene.materials;
@@ -185,7 +198,7 @@ bool Document::newFromScene(const QString& spec, QString* error)
     m_undoStack.clear();
     m_state = std::move(state);
     m_geometry.clear();
-    m_geometry.emplace(source, std::move(scene));
+    m_geometry.emplace(geometryKey(source), std::move(scene));
     m_undoStack.setClean();
     if (!m_filePath.isEmpty()) {
         m_filePath.clear();
@@ -200,7 +213,8 @@ bool Document::openProject(const QString& path, QString* error)
 {
     const QString absolutePath = QFileInfo(path).absoluteFilePath();
     DocumentState state;
-    if (!ProjectFile::load(absolutePath, &state, error))
+    bool wholeSources = false;
+    if (!ProjectFile::load(absolutePath, &state, error, m_modelRoot, &wholeSources))
         return false;
 
     const QString name = QDir::toNativeSeparators(absolutePath);
@@ -209,24 +223,33 @@ bool Document::openProject(const QString& path, QString* error)
             *error = QStringLiteral("%1: field '%2': %3").arg(name, field, problem);
         return false;
     };
-    std::map<QString, render::Scene> geometry;
+    std::map<GeometryKey, render::Scene> geometry;
     std::size_t textureCount = 0;
     for (std::size_t i = 0; i < state.sources.size(); ++i) {
-        const QString& spec = state.sources[i].spec;
-        auto it = geometry.find(spec);
+        const SceneSource& source = state.sources[i];
+        auto it = geometry.find(geometryKey(source));
         if (it == geometry.end()) {
             render::Scene scene;
             QString problem;
-            if (!SceneLoader::load(spec, scene, &problem))
+            if (!SceneLoader::load(source.spec, scene, &problem, nullptr, source.unitScale))
                 return fail(QStringLiteral("sources[%1].spec").arg(i), problem);
-            it = geometry.emplace(spec, std::move(scene)).first;
+            it = geometry.emplace(geometryKey(source), std::move(scene)).first;
+        }
+        if (wholeSources) {
+            // As an import in this order would make them; ids follow the project's, from its next_id.
+            std::vector<SceneNode> nodes
+                = nodesFromScene(it->second, int(i), int(state.materials.size()), &state.nextId);
+            std::vector<render::Material> materials = materialsFromScene(it->second, textureCount);
+            state.nodes.insert(state.nodes.end(), nodes.begin(), nodes.end());
+            state.materials.insert(state.materials.end(), materials.begin(), materials.end());
         }
         textureCount += it->second.textures.size();
     }
     // The checks the project file alone cannot make: they need the geometry.
     for (std::size_t i = 0; i < state.nodes.size(); ++i) {
         const SceneNode& node = state.nodes[i];
-        const std::size_t meshes = geometry.at(state.sources[std::size_t(node.source)].spec).meshes.size();
+        const std::size_t meshes
+            = geometry.at(geometryKey(state.sources[std::size_t(node.source)])).meshes.size();
         if (std::size_t(node.mesh) >= meshes)
             return fail(QStringLiteral("nodes[%1].mesh").arg(i),
                 QStringLiteral("source %1 has %2 meshes, so %3 is out of range")
@@ -268,7 +291,7 @@ bool Document::recoverProject(const QString& path, QString* error)
 bool Document::saveProject(const QString& path, QString* error)
 {
     const QString absolutePath = QFileInfo(path).absoluteFilePath();
-    if (!ProjectFile::save(absolutePath, m_state, error))
+    if (!ProjectFile::save(absolutePath, m_state, error, m_modelRoot))
         return false;
     m_undoStack.setClean();
     m_filePath = absolutePath;
@@ -276,40 +299,41 @@ bool Document::saveProject(const QString& path, QString* error)
     return true;
 }
 
-bool Document::importModel(const QString& path, QString* error)
+bool Document::importModel(const QString& path, QString* error, float unitScale)
 {
-    const QString spec = normalizedSpec(path);
+    const SceneSource source { normalizedSpec(path), unitScale };
     render::Scene scene;
-    if (m_geometry.find(spec) == m_geometry.end() && !SceneLoader::load(spec, scene, error))
+    if (m_geometry.find(geometryKey(source)) == m_geometry.end()
+        && !SceneLoader::load(source.spec, scene, error, nullptr, unitScale))
         return false;
-    return addImportedModel(path, std::move(scene));
+    return addImportedModel(path, std::move(scene), unitScale);
 }
 
-bool Document::addImportedModel(const QString& path, render::Scene loaded)
+bool Document::addImportedModel(const QString& path, render::Scene loaded, float unitScale)
 {
-    const QString spec = normalizedSpec(path);
+    // The document could not save or reopen such a source.
+    if (const QString problem = SceneLoader::unitScaleProblem(unitScale); !problem.isEmpty()) {
+        qWarning("Document::addImportedModel: %s", qPrintable(problem));
+        return false;
+    }
+    const SceneSource source { normalizedSpec(path), unitScale };
     // A model already imported keeps its cached geometry: nodes of the earlier source index into it.
-    auto it = m_geometry.find(spec);
+    auto it = m_geometry.find(geometryKey(source));
     if (it == m_geometry.end())
-        it = m_geometry.emplace(spec, std::move(loaded)).first;
+        it = m_geometry.emplace(geometryKey(source), std::move(loaded)).first;
     const render::Scene& scene = it->second;
 
-    // Texture indices of the new materials point past the textures of every existing source, matching the
-    // concatenation in buildRenderScene().
     std::size_t textureBase = 0;
     for (std::size_t i = 0; i < m_state.sources.size(); ++i)
         textureBase += sourceScene(int(i)).textures.size();
-    std::vector<render::Material> materials = scene.materials;
-    for (render::Material& m : materials)
-        if (m.albedoTexture >= 0)
-            m.albedoTexture += int(textureBase);
+    std::vector<render::Material> materials = materialsFromScene(scene, textureBase);
 
     quint64 nextId = m_state.nextId;
     std::vector<SceneNode> nodes
         = nodesFromScene(scene, int(m_state.sources.size()), int(m_state.materials.size()), &nextId);
     std::vector<LightNode> lights = lightsFromScene(scene, m_state.lights, &nextId);
     m_undoStack.push(new ImportModelCommand(
-        this, { spec }, std::move(materials), std::move(nodes), std::move(lights), nextId));
+        this, source, std::move(materials), std::move(nodes), std::move(lights), nextId));
     return true;
 }
 
@@ -512,7 +536,7 @@ const render::Scene& Document::sourceScene(int source) const
     static const render::Scene kEmpty;
     if (source < 0 || std::size_t(source) >= m_state.sources.size())
         return kEmpty;
-    const auto it = m_geometry.find(m_state.sources[std::size_t(source)].spec);
+    const auto it = m_geometry.find(geometryKey(m_state.sources[std::size_t(source)]));
     return it == m_geometry.end() ? kEmpty : it->second;
 }
 

@@ -9,6 +9,7 @@
 #include <QUndoStack>
 
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace vct::doc {
@@ -28,10 +29,23 @@ public:
     const DocumentState& state() const { return m_state; }
     QUndoStack* undoStack() { return &m_undoStack; }
 
-    /** Starts a new untitled document from a scene spec (builtin:NAME or a model path). Clears undo. */
-    bool newFromScene(const QString& spec, QString* error);
-    /** Opens a .vctproj. On failure the open document is untouched and `error` names the file and problem. */
+    /**
+     * Starts a new untitled document from a scene spec (builtin:NAME or a model path). Clears undo.
+     * `unitScale` is metres per unit of a model file (SceneLoader::load).
+     */
+    bool newFromScene(const QString& spec, QString* error, float unitScale = 1.0f);
+    /**
+     * Opens a .vctproj. On failure the open document is untouched and `error` names the file and problem. A
+     * project without nodes and materials gets one node per mesh of each source and the sources' materials,
+     * as importModel makes them.
+     */
     bool openProject(const QString& path, QString* error);
+    /**
+     * The folder relative model paths in projects are read from and saved to, instead of the project's own
+     * folder (ProjectFile); empty for the project's folder. Kept for every later open and save.
+     */
+    void setModelRoot(const QString& root) { m_modelRoot = root; }
+    QString modelRoot() const { return m_modelRoot; }
     /**
      * Opens an autosaved copy as recovered work: untitled and modified, so that Save asks where to keep it
      * and closing asks first. The copy itself is left in place; the caller removes it once the work is saved.
@@ -39,13 +53,16 @@ public:
     bool recoverProject(const QString& path, QString* error);
     /** Saves atomically; a failure leaves any old file whole. On success the document becomes clean. */
     bool saveProject(const QString& path, QString* error);
-    /** Adds a model's meshes, materials and lights as one undoable step. */
-    bool importModel(const QString& path, QString* error);
     /**
-     * The second half of importModel, for a model already loaded with SceneLoader (on a worker thread, so
-     * the UI stays responsive): adds it as one undoable step.
+     * Adds a model's meshes, materials and lights as one undoable step; `unitScale` is metres per model
+     * unit. The same file at another scale is another source.
      */
-    bool addImportedModel(const QString& path, render::Scene loaded);
+    bool importModel(const QString& path, QString* error, float unitScale = 1.0f);
+    /**
+     * The second half of importModel, for a model already loaded with SceneLoader at `unitScale` (on a
+     * worker thread, so the UI stays responsive): adds it as one undoable step. False for an unusable scale.
+     */
+    bool addImportedModel(const QString& path, render::Scene loaded, float unitScale = 1.0f);
 
     QString filePath() const { return m_filePath; }
     bool isModified() const { return !m_undoStack.isClean(); }
@@ -98,8 +115,13 @@ signals:
     void filePathChanged(const QString& path);
 
 private:
+    /// A source's spec and unit scale: one file at two scales is two different geometries.
+    using GeometryKey = std::pair<QString, float>;
+    static GeometryKey geometryKey(const SceneSource& source) { return { source.spec, source.unitScale }; }
+
     DocumentState m_state;
-    std::map<QString, render::Scene> m_geometry; ///< Imported scenes by source spec.
+    std::map<GeometryKey, render::Scene> m_geometry; ///< Imported scenes, already scaled, by source.
+    QString m_modelRoot;
     QUndoStack m_undoStack;
     QString m_filePath;
     int m_selectedNode = -1;

@@ -16,6 +16,8 @@ namespace vct::doc {
 /** Where a group of nodes' geometry comes from: "builtin:NAME" or an absolute model path. */
 struct SceneSource {
     QString spec;
+    /// Metres per model unit (0.01 for a model in centimetres); the geometry is cached already scaled.
+    float unitScale = 1.0f;
     bool operator==(const SceneSource& other) const = default;
 };
 

@@ -170,13 +170,36 @@ public:
     }
 };
 
-bool readSources(ProjectReader& r, const QJsonObject& root, const QString& projectDir, DocumentState& out)
+/** "unit_scale": optional, 1 when absent; a built-in scene is in metres and takes no other. */
+bool readUnitScale(
+    ProjectReader& r, const QJsonObject& object, const QString& path, const QString& spec, float* unitScale)
+{
+    const QString field = path + QStringLiteral(".unit_scale");
+    if (!object.contains(QStringLiteral("unit_scale")))
+        return true;
+    double d = 0.0;
+    if (!r.readNumber(object, QStringLiteral("unit_scale"), field, &d))
+        return false;
+    const float scale = float(d);
+    if (!(std::isfinite(scale) && scale > 0.0f))
+        return r.fail(field,
+            QStringLiteral(
+                "expected metres per model unit, a number above 0 (0.01 for centimetres), found %1")
+                .arg(d));
+    if (spec.startsWith(kBuiltinPrefix) && scale != 1.0f)
+        return r.fail(
+            field, QStringLiteral("built-in scenes are in metres: only 1 is accepted, found %1").arg(d));
+    *unitScale = scale;
+    return true;
+}
+
+bool readSources(ProjectReader& r, const QJsonObject& root, const QString& modelRoot, DocumentState& out)
 {
     QJsonArray array;
     if (!r.readArray(
             root, QStringLiteral("sources"), QStringLiteral("sources"), ProjectFile::kMaxSources, &array))
         return false;
-    const QDir dir(projectDir);
+    const QDir dir(modelRoot);
     for (qsizetype i = 0; i < array.size(); ++i) {
         const QString path = QStringLiteral("sources[%1]").arg(i);
         QJsonObject object;
@@ -186,17 +209,29 @@ bool readSources(ProjectReader& r, const QJsonObject& root, const QString& proje
             return false;
         if (spec.isEmpty())
             return r.fail(path + QStringLiteral(".spec"), QStringLiteral("is empty"));
+        SceneSource source { spec };
+        if (!readUnitScale(r, object, path, spec, &source.unitScale))
+            return false;
         if (isModelPath(spec)) {
-            spec = QDir::cleanPath(dir.absoluteFilePath(spec));
+            source.spec = QDir::cleanPath(dir.absoluteFilePath(spec));
             // A hostile project may name a device or FIFO ("/dev/zero" reads forever): only regular files.
-            const QFileInfo model(spec);
-            if (!model.isFile())
+            const QFileInfo model(source.spec);
+            const QString resolved = QDir::toNativeSeparators(source.spec);
+            if (model.exists() && !model.isFile())
                 return r.fail(path + QStringLiteral(".spec"),
-                    (model.exists() ? QStringLiteral("model '%1' is not a regular file")
-                                    : QStringLiteral("model file '%1' not found"))
-                        .arg(QDir::toNativeSeparators(spec)));
+                    QStringLiteral("model '%1' is not a regular file").arg(resolved));
+            // A relative path is the one way a project names a model it does not ship (a big model kept
+            // outside the repository), so the message says where it looked and how to look elsewhere.
+            if (!model.exists() && QDir::isRelativePath(spec))
+                return r.fail(path + QStringLiteral(".spec"),
+                    QStringLiteral("model file '%1' (%2.spec '%3') not found: give --scene-root DIR (or %4) "
+                                   "naming the folder that holds %3")
+                        .arg(resolved, path, spec, QLatin1String(ProjectFile::kModelRootVariable)));
+            if (!model.exists())
+                return r.fail(path + QStringLiteral(".spec"),
+                    QStringLiteral("model file '%1' not found").arg(resolved));
         }
-        out.sources.push_back({ spec });
+        out.sources.push_back(source);
     }
     return true;
 }
@@ -435,7 +470,11 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
     QJsonArray sources;
     for (const SceneSource& source : state.sources) {
         const QString spec = isModelPath(source.spec) ? dir.relativeFilePath(source.spec) : source.spec;
-        sources.append(QJsonObject { { "spec", spec } });
+        QJsonObject object { { "spec", spec } };
+        // Only when needed: files of models in metres stay as they were before the field existed.
+        if (source.unitScale != 1.0f)
+            object["unit_scale"] = double(source.unitScale);
+        sources.append(object);
     }
     QJsonArray materials;
     for (const render::Material& m : state.materials)
@@ -486,7 +525,7 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
 }
 
 bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, const QString& fileName,
-    DocumentState* state, QString* error)
+    DocumentState* state, QString* error, bool* wholeSources)
 {
     ProjectReader r(fileName);
     auto failed = [&] {
@@ -531,16 +570,35 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
                 .arg(version)
                 .arg(kVersion));
 
+    // Both or neither: nodes index materials, so one without the other cannot be what the author meant.
+    const bool hasNodes = root.contains(QStringLiteral("nodes"));
+    const bool hasMaterials = root.contains(QStringLiteral("materials"));
+    if (hasNodes != hasMaterials)
+        return fail(hasNodes ? QStringLiteral("materials") : QStringLiteral("nodes"),
+            QStringLiteral(
+                "missing: a project lists both nodes and materials, or neither to take every source "
+                "whole"));
+
     DocumentState result;
-    if (!readSources(r, root, projectDir, result) || !readMaterials(r, root, result)
-        || !readNodes(r, root, result) || !readLights(r, root, result) || !readCamera(r, root, result)
-        || !readSettings(r, root, result) || !readIds(r, root, result))
+    if (!readSources(r, root, projectDir, result)
+        || (hasMaterials && (!readMaterials(r, root, result) || !readNodes(r, root, result)))
+        || !readLights(r, root, result) || !readCamera(r, root, result) || !readSettings(r, root, result)
+        || !readIds(r, root, result))
         return failed();
     *state = std::move(result);
+    if (wholeSources)
+        *wholeSources = !hasNodes;
     return true;
 }
 
-bool ProjectFile::load(const QString& path, DocumentState* state, QString* error)
+QString ProjectFile::modelDir(const QString& projectPath, const QString& modelRoot)
+{
+    return modelRoot.isEmpty() ? QFileInfo(projectPath).absolutePath()
+                               : QDir::cleanPath(QFileInfo(modelRoot).absoluteFilePath());
+}
+
+bool ProjectFile::load(
+    const QString& path, DocumentState* state, QString* error, const QString& modelRoot, bool* wholeSources)
 {
     const QString name = QDir::toNativeSeparators(path);
     auto fail = [&](const QString& problem) {
@@ -566,10 +624,11 @@ bool ProjectFile::load(const QString& path, DocumentState* state, QString* error
         return fail(QStringLiteral("cannot read: %1").arg(file.errorString()));
     if (bytes.size() > kMaxFileBytes)
         return fail(QStringLiteral("is larger than %1 MiB; refused").arg(kMaxFileBytes / (1024 * 1024)));
-    return fromJson(bytes, info.absolutePath(), name, state, error);
+    return fromJson(bytes, modelDir(path, modelRoot), name, state, error, wholeSources);
 }
 
-bool ProjectFile::save(const QString& path, const DocumentState& state, QString* error)
+bool ProjectFile::save(
+    const QString& path, const DocumentState& state, QString* error, const QString& modelRoot)
 {
     const QString name = QDir::toNativeSeparators(path);
     auto fail = [&](const QString& problem) {
@@ -583,7 +642,7 @@ bool ProjectFile::save(const QString& path, const DocumentState& state, QString*
                         .arg(QDir::toNativeSeparators(info.absolutePath())));
     if (info.isDir())
         return fail(QStringLiteral("cannot save: a folder of that name is in the way"));
-    const QByteArray bytes = toJson(state, info.absolutePath());
+    const QByteArray bytes = toJson(state, modelDir(path, modelRoot));
     QSaveFile file(path);
     errno = 0;
     if (!file.open(QIODevice::WriteOnly))

@@ -6,6 +6,7 @@
 #include "ModelImporter.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <QDir>
@@ -20,14 +21,45 @@ namespace {
 
 const QString kBuiltinPrefix = QStringLiteral("builtin:");
 
+bool isFinite(const glm::vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/** False when scaling pushed a coordinate or size past the float range (it was finite before). */
+bool staysFinite(const render::Scene& scaled)
+{
+    const render::Aabb bounds = scaled.bounds();
+    if (!bounds.isEmpty() && !(isFinite(bounds.min) && isFinite(bounds.max)))
+        return false;
+    for (const render::PointLight& p : scaled.pointLights)
+        if (!isFinite(p.position) || !std::isfinite(p.radius))
+            return false;
+    for (const render::SurfaceLight& s : scaled.surfaceLights)
+        if (!isFinite(s.centre) || !std::isfinite(s.width) || !std::isfinite(s.height))
+            return false;
+    return isFinite(scaled.camera.position) && isFinite(scaled.camera.lookAt)
+        && std::isfinite(scaled.camera.nearPlane);
+}
+
 } // namespace
 
-bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info)
+bool SceneLoader::load(
+    const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info, float unitScale)
 {
     SceneLoadInfo localInfo;
     render::Scene result;
+    auto fail = [&](const QString& problem) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(spec), problem);
+        return false;
+    };
 
     if (spec.startsWith(kBuiltinPrefix)) {
+        // Their lights, camera and the goldens are tuned in metres; a scaled copy would match none of them.
+        if (unitScale != 1.0f)
+            return fail(QStringLiteral("built-in scenes are in metres: the unit scale must be 1, not %1")
+                            .arg(double(unitScale)));
         if (!BuiltinScenes::load(spec.mid(kBuiltinPrefix.size()), result, error))
             return false;
     } else {
@@ -36,6 +68,9 @@ bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error
                 *error = QStringLiteral("no scene given: expected builtin:NAME or a model file");
             return false;
         }
+        // Checked before the import, which may take seconds on a big model.
+        if (const QString problem = unitScaleProblem(unitScale); !problem.isEmpty())
+            return fail(problem);
         if (!ModelImporter::importModel(spec, result, error, &localInfo.report))
             return false;
         localInfo.files << spec;
@@ -62,12 +97,63 @@ bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error
         } else {
             result.camera = frameBounds(result.bounds());
         }
+        if (unitScale != 1.0f) {
+            result = scaledScene(std::move(result), unitScale);
+            if (!staysFinite(result))
+                return fail(QStringLiteral("a unit scale of %1 m takes the model's coordinates beyond the "
+                                           "range of a float")
+                                .arg(double(unitScale)));
+        }
     }
 
     scene = std::move(result);
     if (info)
         *info = std::move(localInfo);
     return true;
+}
+
+render::Scene SceneLoader::scaledScene(render::Scene scene, float unitScale)
+{
+    const float s = unitScale;
+    const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(s));
+    for (render::Mesh& mesh : scene.meshes)
+        mesh.transform = scale * mesh.transform;
+    for (render::PointLight& light : scene.pointLights) {
+        light.position *= s;
+        light.radius *= s;
+    }
+    for (render::SurfaceLight& light : scene.surfaceLights) {
+        light.centre *= s;
+        light.width *= s;
+        light.height *= s;
+    }
+    scene.camera.position *= s;
+    scene.camera.lookAt *= s;
+    // Both ways a loaded camera gets its near plane (nearPlaneFor, frameBounds) are proportional to the size.
+    scene.camera.nearPlane *= s;
+    return scene;
+}
+
+QString SceneLoader::unitScaleProblem(float unitScale)
+{
+    if (std::isfinite(unitScale) && unitScale > 0.0f)
+        return {};
+    return QStringLiteral("the unit scale must be a finite number of metres per model unit above 0 (0.01 for "
+                          "centimetres), not %1")
+        .arg(double(unitScale));
+}
+
+QString SceneLoader::parseUnitScale(const QString& text, float* unitScale)
+{
+    bool ok = false;
+    const float value = text.trimmed().toFloat(&ok);
+    if (!ok)
+        return QStringLiteral("expected metres per model unit as a number (0.01 for centimetres), not '%1'")
+            .arg(text);
+    if (QString problem = unitScaleProblem(value); !problem.isEmpty())
+        return problem;
+    *unitScale = value;
+    return {};
 }
 
 render::Camera SceneLoader::frameBounds(const render::Aabb& bounds, float fovYDeg)

@@ -15,6 +15,10 @@ namespace vct::doc {
  * Next to a model file `DIR/STEM.EXT`, the optional siblings `DIR/STEM.lights.json` (LightsFile) and
  * `DIR/STEM.camera.json` (CameraFile) are loaded too, as tests/data/reference lays its scenes out. Without a
  * camera file the camera frames the bounds (frameBounds()).
+ *
+ * A model file may be in any unit: `unitScale` is metres per model unit (0.01 for centimetres). The siblings
+ * are in the model's units too, so the whole loaded scene is scaled (scaledScene()). Built-in scenes are in
+ * metres and accept no other scale.
  */
 class SceneLoader {
 public:
@@ -23,10 +27,21 @@ public:
     /**
      * Replaces `scene` with the scene `spec` names. On failure returns false, leaves `scene` unchanged and
      * names the file and the problem in `error`. `info`, if given, receives the import report and the camera
-     * file's image size.
+     * file's image size. `unitScale` is metres per unit of a model file; a built-in scene takes only 1.
      */
-    static bool load(
-        const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info = nullptr);
+    static bool load(const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info = nullptr,
+        float unitScale = 1.0f);
+
+    /**
+     * `scene`, in units of `unitScale` metres, in metres: mesh transforms, light positions, light sizes and
+     * the camera (its near plane too) scaled about the origin. Directions, angles, intensities and radiances
+     * are physical quantities that do not depend on the unit, so they stay.
+     */
+    static render::Scene scaledScene(render::Scene scene, float unitScale);
+    /** Empty when `unitScale` can scale a model (finite and positive), else the problem. */
+    static QString unitScaleProblem(float unitScale);
+    /** A unit scale as a command line gives it ("0.01"): empty on success, else the problem. */
+    static QString parseUnitScale(const QString& text, float* unitScale);
 
     /**
      * A camera on the +z side of `bounds` looking at its centre (-z), far enough that the bounding sphere

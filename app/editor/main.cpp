@@ -1,11 +1,27 @@
+#include "document/Document.h"
+#include "document/ProjectFile.h"
+#include "document/SceneLoader.h"
 #include "ui/MainWindow.h"
 #include "ui/ViewportWidget.h"
 #include "ui/VoxelInspectorDock.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QSurfaceFormat>
 #include <QTimer>
+
+#include <cstdio>
+
+namespace {
+
+int fail(const QString& message)
+{
+    std::fprintf(stderr, "vct-editor: %s\n", qPrintable(message));
+    return 1;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -33,12 +49,45 @@ int main(int argc, char** argv)
     const QCommandLineOption inspect(QStringLiteral("inspect-level"),
         QStringLiteral("Open with the voxel inspector showing this mip level of the radiance."),
         QStringLiteral("N"));
-    parser.addOptions({ screenshot, inspect });
+    const QCommandLineOption unitScaleOption(QStringLiteral("unit-scale"),
+        QStringLiteral("Metres per unit of a model file SCENE (0.01 for centimetres). Default 1."),
+        QStringLiteral("S"));
+    const QCommandLineOption sceneRootOption(QStringLiteral("scene-root"),
+        QStringLiteral("The folder projects' relative model paths resolve against and are saved relative to, "
+                       "instead of each project's (default: $%1 when set).")
+            .arg(QLatin1String(vct::doc::ProjectFile::kModelRootVariable)),
+        QStringLiteral("DIR"));
+    parser.addOptions({ screenshot, inspect, unitScaleOption, sceneRootOption });
     parser.process(app);
 
-    vct::ui::MainWindow window;
     const QStringList scenes = parser.positionalArguments();
-    window.openInitial(scenes.isEmpty() ? QStringLiteral("builtin:default") : scenes.front());
+    const QString scene = scenes.isEmpty() ? QStringLiteral("builtin:default") : scenes.front();
+    float unitScale = 1.0f;
+    if (parser.isSet(unitScaleOption)) {
+        if (scene.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive))
+            return fail(QStringLiteral("--unit-scale applies to a model file; a project gives each of its "
+                                       "sources its own \"unit_scale\""));
+        if (scene.startsWith(QStringLiteral("builtin:")))
+            return fail(
+                QStringLiteral("--unit-scale applies to a model file; built-in scenes are in metres"));
+        if (const QString problem
+            = vct::doc::SceneLoader::parseUnitScale(parser.value(unitScaleOption), &unitScale);
+            !problem.isEmpty())
+            return fail(QStringLiteral("--unit-scale: %1").arg(problem));
+    }
+    const bool rootFromOption = parser.isSet(sceneRootOption);
+    const QString sceneRoot = rootFromOption
+        ? parser.value(sceneRootOption)
+        : qEnvironmentVariable(vct::doc::ProjectFile::kModelRootVariable);
+    if (!sceneRoot.isEmpty() && !QFileInfo(sceneRoot).isDir())
+        return fail(QStringLiteral("the scene root '%1' (from %2) is not a folder")
+                        .arg(sceneRoot,
+                            rootFromOption ? QStringLiteral("--scene-root")
+                                           : QLatin1String(vct::doc::ProjectFile::kModelRootVariable)));
+
+    vct::ui::MainWindow window;
+    window.document()->setModelRoot(sceneRoot);
+    window.openInitial(scene, unitScale);
     if (parser.isSet(inspect))
         window.inspectorDock()->setSettings(
             { true, parser.value(inspect).toInt(), vct::render::VoxelChannel::Radiance });
