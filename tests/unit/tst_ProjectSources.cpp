@@ -293,6 +293,44 @@ private slots:
                 && !error.contains(QStringLiteral("--scene-root")),
             qPrintable(error));
     }
+
+    // The shipped resources/scenes/sponza.vctproj stays loadable: with a stand-in for the model (the real
+    // one is not in the repository) under a scene root, it opens with its sun, camera and settings, in
+    // centimetres.
+    void shippedSponzaProjectOpens()
+    {
+        const QString root = testDir(QStringLiteral("sponza-root"));
+        QVERIFY(QDir().mkpath(root + QStringLiteral("/sponza")));
+        for (const char* name : { "cornell.obj", "cornell.mtl" }) {
+            const QString target = root + QStringLiteral("/sponza/")
+                + QString::fromLatin1(name).replace(QStringLiteral("cornell"), QStringLiteral("sponza"));
+            QFile::remove(target);
+            QVERIFY(QFile::copy(test::referenceDir() + QLatin1Char('/') + QLatin1String(name), target));
+        }
+        // The OBJ names its material library: the stand-in's must be found under its new name.
+        QFile obj(root + QStringLiteral("/sponza/sponza.obj"));
+        QVERIFY(obj.open(QIODevice::ReadOnly));
+        QByteArray text = obj.readAll();
+        obj.close();
+        text.replace("cornell.mtl", "sponza.mtl");
+        test::writeFile(obj.fileName(), text);
+
+        Document doc;
+        doc.setModelRoot(root);
+        QString error;
+        QVERIFY2(
+            doc.openProject(test::sourceDir() + QStringLiteral("/resources/scenes/sponza.vctproj"), &error),
+            qPrintable(error));
+        QCOMPARE(doc.state().sources.size(), std::size_t(1));
+        QCOMPARE(doc.state().sources[0].unitScale, 0.01f);
+        QVERIFY(!doc.state().nodes.empty());
+        QCOMPARE(doc.state().lights.size(), std::size_t(1));
+        QVERIFY(doc.state().lights[0].type == doc::LightType::Directional);
+        QCOMPARE(doc.state().lights[0].angularDiameterDeg, 0.53f);
+        QCOMPARE(doc.state().settings.voxelResolution, 128);
+        const render::Aabb bounds = doc.sourceScene(0).bounds();
+        QVERIFY(glm::length(bounds.size()) < 0.05f); // the 2 m stand-in, read as centimetres
+    }
 };
 
 QTEST_GUILESS_MAIN(tst_ProjectSources)
