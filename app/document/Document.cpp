@@ -213,8 +213,8 @@ bool Document::openProject(const QString& path, QString* error)
 {
     const QString absolutePath = QFileInfo(path).absoluteFilePath();
     DocumentState state;
-    bool wholeSources = false;
-    if (!ProjectFile::load(absolutePath, &state, error, m_modelRoot, &wholeSources))
+    WholeSources whole;
+    if (!ProjectFile::load(absolutePath, &state, error, m_modelRoot, &whole))
         return false;
 
     const QString name = QDir::toNativeSeparators(absolutePath);
@@ -235,10 +235,14 @@ bool Document::openProject(const QString& path, QString* error)
                 return fail(QStringLiteral("sources[%1].spec").arg(i), problem);
             it = geometry.emplace(geometryKey(source), std::move(scene)).first;
         }
-        if (wholeSources) {
+        if (whole.used) {
             // As an import in this order would make them; ids follow the project's, from its next_id.
             std::vector<SceneNode> nodes
                 = nodesFromScene(it->second, int(i), int(state.materials.size()), &state.nextId);
+            for (SceneNode& node : nodes) {
+                node.transform = whole.placement[i];
+                node.dynamic = whole.dynamic[i];
+            }
             std::vector<render::Material> materials = materialsFromScene(it->second, textureCount);
             state.nodes.insert(state.nodes.end(), nodes.begin(), nodes.end());
             state.materials.insert(state.materials.end(), materials.begin(), materials.end());

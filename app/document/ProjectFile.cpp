@@ -236,6 +236,46 @@ bool readSources(ProjectReader& r, const QJsonObject& root, const QString& model
     return true;
 }
 
+/**
+ * Each source's optional "placement" {translation, rotation_deg, scale, dynamic}: only where the project
+ * takes its sources whole, since a listed node carries its own.
+ */
+bool readPlacements(ProjectReader& r, const QJsonObject& root, WholeSources& whole)
+{
+    const QJsonArray array = root.value(QStringLiteral("sources")).toArray();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("sources[%1].placement").arg(i);
+        NodeTransform placement;
+        bool dynamic = false;
+        const QJsonObject source = array[i].toObject();
+        if (source.contains(QStringLiteral("placement"))) {
+            if (!whole.used)
+                return r.fail(path,
+                    QStringLiteral("applies only to a project that lists no nodes: a listed "
+                                   "node carries its own translation, rotation and scale"));
+            QJsonObject o;
+            if (!r.readObject(source.value(QStringLiteral("placement")), path, &o))
+                return false;
+            const QString prefix = path + QLatin1Char('.');
+            if ((o.contains(QStringLiteral("translation"))
+                    && !r.readFiniteVec3(o, "translation", prefix + "translation", &placement.translation))
+                || (o.contains(QStringLiteral("rotation_deg"))
+                    && !r.readFiniteVec3(o, "rotation_deg", prefix + "rotation_deg", &placement.rotationDeg))
+                || (o.contains(QStringLiteral("scale"))
+                    && !r.readFiniteVec3(o, "scale", prefix + "scale", &placement.scale))
+                || (o.contains(QStringLiteral("dynamic"))
+                    && !r.readBool(o, "dynamic", prefix + "dynamic", &dynamic)))
+                return false;
+            if (!(placement.scale.x > 0.0f && placement.scale.y > 0.0f && placement.scale.z > 0.0f))
+                return r.fail(
+                    prefix + QStringLiteral("scale"), QStringLiteral("expected three numbers above 0"));
+        }
+        whole.placement.push_back(placement);
+        whole.dynamic.push_back(dynamic);
+    }
+    return true;
+}
+
 bool readMaterials(ProjectReader& r, const QJsonObject& root, DocumentState& out)
 {
     QJsonArray array;
@@ -525,7 +565,7 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
 }
 
 bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, const QString& fileName,
-    DocumentState* state, QString* error, bool* wholeSources)
+    DocumentState* state, QString* error, WholeSources* wholeSources)
 {
     ProjectReader r(fileName);
     auto failed = [&] {
@@ -580,14 +620,16 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
                 "whole"));
 
     DocumentState result;
-    if (!readSources(r, root, projectDir, result)
+    WholeSources whole;
+    whole.used = !hasNodes;
+    if (!readSources(r, root, projectDir, result) || !readPlacements(r, root, whole)
         || (hasMaterials && (!readMaterials(r, root, result) || !readNodes(r, root, result)))
         || !readLights(r, root, result) || !readCamera(r, root, result) || !readSettings(r, root, result)
         || !readIds(r, root, result))
         return failed();
     *state = std::move(result);
     if (wholeSources)
-        *wholeSources = !hasNodes;
+        *wholeSources = std::move(whole);
     return true;
 }
 
@@ -597,8 +639,8 @@ QString ProjectFile::modelDir(const QString& projectPath, const QString& modelRo
                                : QDir::cleanPath(QFileInfo(modelRoot).absoluteFilePath());
 }
 
-bool ProjectFile::load(
-    const QString& path, DocumentState* state, QString* error, const QString& modelRoot, bool* wholeSources)
+bool ProjectFile::load(const QString& path, DocumentState* state, QString* error, const QString& modelRoot,
+    WholeSources* wholeSources)
 {
     const QString name = QDir::toNativeSeparators(path);
     auto fail = [&](const QString& problem) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "DocumentState.h"
+#include "WholeSources.h"
 
 #include <QByteArray>
 #include <QString>
@@ -35,7 +36,9 @@ namespace vct::doc {
  * A project may omit both nodes and materials (never just one): every source is then taken whole, one node
  * per mesh with the source's own materials, as an import makes them (Document::openProject does it, since it
  * needs the geometry). The lights are still the project's: a model's sibling NAME.lights.json is not read
- * into the document. Saving such a document writes its nodes and materials in full.
+ * into the document. Saving such a document writes its nodes and materials in full. A source of such a
+ * project may carry "placement": {translation, rotation_deg, scale, dynamic} (all optional), given to every
+ * node made from it (WholeSources); a project that lists its nodes refuses it.
  *
  * Loading validates everything and reports the first problem naming the file and the field. Index checks
  * that need the geometry (a node's mesh, a material's texture) are left to the caller (Document).
@@ -56,10 +59,10 @@ public:
      * a message naming the file and the field to `error`. Model files the sources name must exist; relative
      * ones are looked for under `modelRoot`, or beside the project when it is empty. `wholeSources`, if
      * given, tells whether the project omitted nodes and materials (then `state` has none: the caller makes
-     * them from the geometry).
+     * them from the geometry) and how each source's nodes are placed.
      */
     static bool load(const QString& path, DocumentState* state, QString* error,
-        const QString& modelRoot = QString(), bool* wholeSources = nullptr);
+        const QString& modelRoot = QString(), WholeSources* wholeSources = nullptr);
     /**
      * Writes `state` to `path` atomically (QSaveFile): on failure returns false, any old file there is left
      * byte-identical, and `error` names the file and the reason. Model paths are written relative to
@@ -77,7 +80,7 @@ public:
      * `fileName` is used in messages only; `wholeSources` as in load().
      */
     static bool fromJson(const QByteArray& json, const QString& projectDir, const QString& fileName,
-        DocumentState* state, QString* error, bool* wholeSources = nullptr);
+        DocumentState* state, QString* error, WholeSources* wholeSources = nullptr);
 };
 
 } // namespace vct::doc

@@ -294,6 +294,40 @@ private slots:
             qPrintable(error));
     }
 
+    // A whole source's placement reaches each of its nodes; it is refused, naming the field, where the
+    // project lists its nodes (they carry their own) and where its scale is not above zero.
+    void placementOfWholeSources()
+    {
+        const QString dir = testDir(QStringLiteral("placement"));
+        QJsonObject source { { "spec", cornellModel() },
+            { "placement",
+                QJsonObject { { "translation", QJsonArray { 1, 2, 3 } }, { "scale", QJsonArray { 2, 2, 2 } },
+                    { "dynamic", true } } } };
+        Document doc;
+        QString error;
+        QVERIFY2(doc.openProject(
+                     writeProject(dir + QStringLiteral("/placed.vctproj"), projectWith({ source })), &error),
+            qPrintable(error));
+        QVERIFY(!doc.state().nodes.empty());
+        for (const doc::SceneNode& node : doc.state().nodes) {
+            QVERIFY(node.dynamic);
+            QCOMPARE(node.transform.translation, glm::vec3(1, 2, 3));
+            QCOMPARE(node.transform.scale, glm::vec3(2.0f));
+        }
+
+        QJsonObject listed = projectWith({ source });
+        listed.insert("nodes", QJsonArray {});
+        listed.insert("materials", QJsonArray {});
+        QVERIFY(!doc.openProject(writeProject(dir + QStringLiteral("/listed.vctproj"), listed), &error));
+        QVERIFY2(error.contains(QStringLiteral("sources[0].placement")), qPrintable(error));
+
+        QJsonObject flat = source;
+        flat.insert("placement", QJsonObject { { "scale", QJsonArray { 1, 0, 1 } } });
+        QVERIFY(!doc.openProject(
+            writeProject(dir + QStringLiteral("/flat.vctproj"), projectWith({ flat })), &error));
+        QVERIFY2(error.contains(QStringLiteral("sources[0].placement.scale")), qPrintable(error));
+    }
+
     // The shipped resources/scenes/sponza.vctproj stays loadable: with a stand-in for the model (the real
     // one is not in the repository) under a scene root, it opens with its sun, camera and settings, in
     // centimetres.
@@ -321,9 +355,23 @@ private slots:
         QVERIFY2(
             doc.openProject(test::sourceDir() + QStringLiteral("/resources/scenes/sponza.vctproj"), &error),
             qPrintable(error));
-        QCOMPARE(doc.state().sources.size(), std::size_t(1));
+        QCOMPARE(doc.state().sources.size(), std::size_t(2));
         QCOMPARE(doc.state().sources[0].unitScale, 0.01f);
         QVERIFY(!doc.state().nodes.empty());
+        // The bunny, placed and dynamic on the floor as in the paper's benchmark.
+        const doc::SceneNode& bunny = doc.state().nodes.back();
+        QCOMPARE(bunny.source, 1);
+        QVERIFY(bunny.dynamic);
+        QCOMPARE(bunny.transform.rotationDeg.y, 50.0f);
+        QVERIFY(!doc.state().nodes.front().dynamic);
+        QVERIFY(doc.state().nodes.front().transform == doc::NodeTransform {});
+        // Saved, it lists every node, keeps the bunny's resource path and reopens the same.
+        const QString saved = testDir(QStringLiteral("sponza-saved")) + QStringLiteral("/sponza.vctproj");
+        QVERIFY2(doc.saveProject(saved, &error), qPrintable(error));
+        Document reopened;
+        reopened.setModelRoot(root);
+        QVERIFY2(reopened.openProject(saved, &error), qPrintable(error));
+        QVERIFY(doc::sameDocument(doc.state(), reopened.state()));
         QCOMPARE(doc.state().lights.size(), std::size_t(1));
         QVERIFY(doc.state().lights[0].type == doc::LightType::Directional);
         QCOMPARE(doc.state().lights[0].angularDiameterDeg, 0.53f);
