@@ -7,6 +7,7 @@
 #include "RenderSettingsDock.h"
 #include "SceneGraphDock.h"
 #include "StatsDock.h"
+#include "TransformDock.h"
 #include "ViewportWidget.h"
 #include "VoxelInspectorDock.h"
 
@@ -101,6 +102,7 @@ void MainWindow::buildDocks()
 {
     m_sceneDock = new SceneGraphDock(this);
     m_materialDock = new MaterialDock(this);
+    m_transformDock = new TransformDock(this);
     m_lightDock = new LightDock(this);
     m_settingsDock = new RenderSettingsDock(this);
     m_inspectorDock = new VoxelInspectorDock(this);
@@ -110,14 +112,19 @@ void MainWindow::buildDocks()
     m_sceneDock->setDocument(m_document);
     m_compareDock->setDocument(m_document);
     m_materialDock->setDocument(m_document);
+    m_transformDock->setDocument(m_document);
     m_lightDock->setDocument(m_document);
     m_settingsDock->setDocument(m_document);
     addDockWidget(Qt::LeftDockWidgetArea, m_sceneDock);
     addDockWidget(Qt::LeftDockWidgetArea, m_lightDock);
     addDockWidget(Qt::RightDockWidgetArea, m_materialDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_transformDock);
     addDockWidget(Qt::RightDockWidgetArea, m_settingsDock);
     addDockWidget(Qt::RightDockWidgetArea, m_inspectorDock);
     addDockWidget(Qt::RightDockWidgetArea, m_statsDock);
+    // A tab beside the material, not a row below it: the right column keeps its width and the docks under it
+    // their height.
+    tabifyDockWidget(m_materialDock, m_transformDock);
     tabifyDockWidget(m_materialDock, m_settingsDock);
     tabifyDockWidget(m_inspectorDock, m_statsDock);
     m_materialDock->raise();
@@ -196,15 +203,27 @@ void MainWindow::buildMenus()
     edit->addAction(redo);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* dock :
-        { static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_materialDock),
-            static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
-            static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock),
-            static_cast<QDockWidget*>(m_compareDock), static_cast<QDockWidget*>(m_accuracyDock) })
+    for (QDockWidget* dock : { static_cast<QDockWidget*>(m_sceneDock),
+             static_cast<QDockWidget*>(m_materialDock), static_cast<QDockWidget*>(m_transformDock),
+             static_cast<QDockWidget*>(m_lightDock), static_cast<QDockWidget*>(m_settingsDock),
+             static_cast<QDockWidget*>(m_inspectorDock), static_cast<QDockWidget*>(m_statsDock),
+             static_cast<QDockWidget*>(m_compareDock), static_cast<QDockWidget*>(m_accuracyDock) })
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(
         tr("&Frame selection"), QKeySequence(tr("F")), m_viewport, &ViewportWidget::frameSelected);
+    m_viewMenu
+        ->addAction(tr("Frame &all"), QKeySequence(tr("Shift+F")), m_viewport, &ViewportWidget::frameAll)
+        ->setObjectName(QStringLiteral("frameAllAction"));
+    m_viewMenu
+        ->addAction(tr("&Reset camera"), QKeySequence(Qt::Key_Home), m_viewport, &ViewportWidget::resetCamera)
+        ->setObjectName(QStringLiteral("resetCameraAction"));
+    // Alt+Z, not Ctrl+Shift+Z: that is redo on Linux and macOS.
+    QAction* undoView = m_viewMenu->addAction(
+        tr("&Undo view"), QKeySequence(tr("Alt+Z")), m_viewport, &ViewportWidget::undoView);
+    undoView->setObjectName(QStringLiteral("undoViewAction"));
+    undoView->setEnabled(false);
+    connect(m_viewport, &ViewportWidget::viewHistoryChanged, undoView, &QAction::setEnabled);
     QAction* nonFinite = m_viewMenu->addAction(tr("Check for &NaN/Inf"));
     nonFinite->setObjectName(QStringLiteral("nonFiniteCheckAction"));
     nonFinite->setCheckable(true);

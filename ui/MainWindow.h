@@ -18,6 +18,7 @@ class ReferenceCompareDock;
 class RenderSettingsDock;
 class SceneGraphDock;
 class StatsDock;
+class TransformDock;
 class ViewportWidget;
 class VoxelInspectorDock;
 
@@ -41,6 +42,7 @@ public:
     doc::Document* document() const { return m_document; }
     ViewportWidget* viewport() const { return m_viewport; }
     MaterialDock* materialDock() const { return m_materialDock; }
+    TransformDock* transformDock() const { return m_transformDock; }
     RenderSettingsDock* renderSettingsDock() const { return m_settingsDock; }
     VoxelInspectorDock* inspectorDock() const { return m_inspectorDock; }
     SceneGraphDock* sceneGraphDock() const { return m_sceneDock; }
@@ -90,6 +92,7 @@ private:
     ViewportWidget* m_viewport;
     SceneGraphDock* m_sceneDock = nullptr;
     MaterialDock* m_materialDock = nullptr;
+    TransformDock* m_transformDock = nullptr;
     LightDock* m_lightDock = nullptr;
     RenderSettingsDock* m_settingsDock = nullptr;
     VoxelInspectorDock* m_inspectorDock = nullptr;

@@ -30,6 +30,8 @@ void* qtProcAddress(const char* name)
 }
 
 constexpr float kOrbitDegreesPerPixel = 0.3f;
+/// Wheel steps further apart than this are separate zoom gestures for View > Undo view.
+constexpr int kWheelGestureMs = 400;
 
 } // namespace
 
@@ -50,8 +52,25 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
     });
     m_flyTimer.setInterval(30);
     connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
+    m_wheelGestureTimer.setSingleShot(true);
+    m_wheelGestureTimer.setInterval(kWheelGestureMs);
+    connect(&m_wheelGestureTimer, &QTimer::timeout, this, &ViewportWidget::endGestureIfIdle);
     // Any document edit changes the picture; camera edits arrive here too.
-    connect(document, &doc::Document::changed, this, [this] { update(); });
+    connect(document, &doc::Document::changed, this, [this](const doc::ChangeEvent& event) {
+        using Kind = doc::ChangeEvent::Kind;
+        const render::Camera& camera = m_document->state().camera;
+        // An import resets too but keeps the camera; a new scene or project brings its own, and the way back
+        // would lead through another scene's cameras.
+        if (event.kind == Kind::Reset && !doc::sameCamera(camera, m_knownCamera)) {
+            m_history.clear();
+            m_gestureStart.reset();
+            m_pivot.reset();
+            emit viewHistoryChanged(false);
+        }
+        if (event.kind == Kind::Reset || event.kind == Kind::Camera)
+            m_knownCamera = camera;
+        update();
+    });
 }
 
 ViewportWidget::~ViewportWidget()
@@ -208,6 +227,77 @@ void ViewportWidget::setCamera(const render::Camera& camera)
     startInteraction();
 }
 
+void ViewportWidget::beginGesture()
+{
+    if (!m_gestureStart)
+        m_gestureStart = m_document->state().camera;
+}
+
+void ViewportWidget::endGestureIfIdle()
+{
+    if (m_dragButton == Qt::NoButton && !m_flyTimer.isActive() && !m_wheelGestureTimer.isActive())
+        endGesture();
+}
+
+void ViewportWidget::endGesture()
+{
+    m_wheelGestureTimer.stop();
+    if (!m_gestureStart)
+        return;
+    m_history.record(*m_gestureStart, m_document->state().camera);
+    m_gestureStart.reset();
+    emit viewHistoryChanged(!m_history.isEmpty());
+}
+
+void ViewportWidget::jumpTo(const render::Camera& camera)
+{
+    // A jump in the middle of a drag or a flight splits it: what came before, the jump and what follows are
+    // undone one at a time.
+    const bool continuing = m_dragButton != Qt::NoButton || m_flyTimer.isActive();
+    endGesture();
+    m_history.record(m_document->state().camera, camera);
+    setCamera(camera);
+    emit viewHistoryChanged(!m_history.isEmpty());
+    if (continuing)
+        beginGesture();
+}
+
+void ViewportWidget::undoView()
+{
+    const bool continuing = m_dragButton != Qt::NoButton || m_flyTimer.isActive();
+    // A zoom still waiting for the wheel to settle is the last gesture, not the one before it.
+    endGesture();
+    if (m_history.isEmpty())
+        return;
+    setCamera(m_history.takeLast());
+    emit viewHistoryChanged(!m_history.isEmpty());
+    if (continuing)
+        beginGesture();
+}
+
+void ViewportWidget::resetCamera()
+{
+    jumpTo(m_document->savedCamera());
+}
+
+void ViewportWidget::startOrbit()
+{
+    const render::Camera& camera = m_document->state().camera;
+    glm::vec3 origin, direction;
+    const bool inInspector = m_inspector.enabled && !rayThrough(m_pressPosition, origin, direction, false);
+    if (rayThrough(m_pressPosition, origin, direction, inInspector)) {
+        const sync::PickResult hit = sync::pickNode(*m_document, origin, direction);
+        if (hit.node >= 0) {
+            m_pivot = hit.point;
+            setCamera(CameraController::focusAtDepth(camera, hit.point));
+            return;
+        }
+    }
+    const render::Aabb selection
+        = m_document->selectedNode() >= 0 ? visibleBounds(m_document->selectedNode()) : render::Aabb {};
+    m_pivot = selection.isEmpty() ? camera.lookAt : selection.center();
+}
+
 bool ViewportWidget::rayThrough(
     const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const
 {
@@ -237,6 +327,10 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_dragButton = event->button();
     m_movingNode = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier)
         && m_document->selectedNode() >= 0;
+    // The pivot is picked when the drag turns out to be an orbit: a click picks once, on release.
+    m_pivot.reset();
+    if (!m_movingNode)
+        beginGesture();
     setFocus();
 }
 
@@ -288,9 +382,14 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     if (pan)
         setCamera(CameraController::pan(camera, -float(delta.x()) / float(std::max(1, height())),
             float(delta.y()) / float(std::max(1, height()))));
-    else if (m_dragButton == Qt::LeftButton || m_dragButton == Qt::RightButton)
-        setCamera(CameraController::orbit(
-            camera, float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
+    else if (m_dragButton == Qt::LeftButton || m_dragButton == Qt::RightButton) {
+        // Picked where the button went down: only a Shift pan earlier in this drag can have moved the view
+        // since.
+        if (!m_pivot)
+            startOrbit();
+        setCamera(CameraController::orbitAbout(m_document->state().camera, *m_pivot,
+            float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
+    }
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
@@ -305,11 +404,15 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     }
     m_dragButton = Qt::NoButton;
     m_movingNode = false;
+    m_pivot.reset();
+    endGestureIfIdle();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event)
 {
+    beginGesture();
     setCamera(CameraController::zoom(m_document->state().camera, float(event->angleDelta().y()) / 120.0f));
+    m_wheelGestureTimer.start();
 }
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event)
@@ -333,6 +436,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
         if (!event->isAutoRepeat()) {
             m_flyKeys.insert(event->key());
             if (!m_flyTimer.isActive()) {
+                beginGesture();
                 m_flyClock.start();
                 m_flyTimer.start();
             }
@@ -348,8 +452,11 @@ void ViewportWidget::keyReleaseEvent(QKeyEvent* event)
     if (!event->isAutoRepeat())
         m_flyKeys.remove(event->key());
     if (!m_flyKeys.contains(Qt::Key_W) && !m_flyKeys.contains(Qt::Key_A) && !m_flyKeys.contains(Qt::Key_S)
-        && !m_flyKeys.contains(Qt::Key_D) && !m_flyKeys.contains(Qt::Key_Q) && !m_flyKeys.contains(Qt::Key_E))
+        && !m_flyKeys.contains(Qt::Key_D) && !m_flyKeys.contains(Qt::Key_Q)
+        && !m_flyKeys.contains(Qt::Key_E)) {
         m_flyTimer.stop();
+        endGestureIfIdle();
+    }
     QOpenGLWidget::keyReleaseEvent(event);
 }
 
@@ -357,6 +464,7 @@ void ViewportWidget::focusOutEvent(QFocusEvent* event)
 {
     m_flyKeys.clear();
     m_flyTimer.stop();
+    endGestureIfIdle();
     QOpenGLWidget::focusOutEvent(event);
 }
 
@@ -381,10 +489,24 @@ void ViewportWidget::flyStep()
 void ViewportWidget::frameSelected()
 {
     const int node = m_document->selectedNode();
+    if (node < 0) {
+        frameAll();
+        return;
+    }
+    jumpTo(CameraController::frame(m_document->state().camera, visibleBounds(node)));
+}
+
+void ViewportWidget::frameAll()
+{
+    jumpTo(CameraController::frameAll(m_document->state().camera, visibleBounds()));
+}
+
+render::Aabb ViewportWidget::visibleBounds(int only) const
+{
     render::Aabb box;
     const auto& nodes = m_document->state().nodes;
     for (std::size_t n = 0; n < nodes.size(); ++n) {
-        if ((node >= 0 && int(n) != node) || !nodes[n].visible)
+        if ((only >= 0 && int(n) != only) || !nodes[n].visible)
             continue;
         const render::Scene& source = m_document->sourceScene(nodes[n].source);
         if (nodes[n].mesh < 0 || std::size_t(nodes[n].mesh) >= source.meshes.size())
@@ -393,7 +515,7 @@ void ViewportWidget::frameSelected()
         for (const glm::vec3& p : source.meshes[std::size_t(nodes[n].mesh)].positions)
             box.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
     }
-    setCamera(CameraController::frame(m_document->state().camera, box));
+    return box;
 }
 
 void ViewportWidget::hoverVoxel(const QPoint& position)

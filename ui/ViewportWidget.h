@@ -1,9 +1,11 @@
 #pragma once
 
+#include "CameraHistory.h"
 #include "InspectorSettings.h"
 
 #include "core/FrameStats.h"
 #include "image/RadianceImage.h"
+#include "scene/Aabb.h"
 #include "scene/Camera.h"
 
 #include <QElapsedTimer>
@@ -12,6 +14,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 
 namespace vct::doc {
 class Document;
@@ -28,11 +31,13 @@ namespace vct::ui {
 class NonFiniteOverlay;
 
 /**
- * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (orbit with the left button,
- * pan with the middle button or Shift, wheel zoom, WASD/QE fly, F frames the selection), picks nodes with a
- * click and moves the selected node with Ctrl+drag (hold X, Y or Z to keep to that axis). While anything
- * moves it renders at reduced resolution and refines to full resolution once idle. With the inspector on, the
- * right half shows the voxels of one mip level as instanced cubes seen by the same camera.
+ * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (the left button orbits about the
+ * surface point under the cursor, else the selection's centre, else the look-at point; pan with the middle
+ * button or Shift, wheel zoom, WASD/QE fly, F frames the selection), picks nodes with a click and moves the
+ * selected node with Ctrl+drag (hold X, Y or Z to keep to that axis). Each completed camera gesture leaves
+ * the camera before it in a short history that undoView() walks back. While anything moves it renders at
+ * reduced resolution and refines to full resolution once idle. With the inspector on, the right half shows
+ * the voxels of one mip level as instanced cubes seen by the same camera.
  */
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -65,13 +70,23 @@ public:
     const NonFiniteOverlay* nonFiniteOverlay() const { return m_nonFiniteOverlay; }
 
 public slots:
+    /** Frames the selected node, or with nothing selected, the whole scene as frameAll() does. */
     void frameSelected();
+    /** Frames every visible node; from inside the scene's bounds it turns to their centre (CameraController).
+     */
+    void frameAll();
+    /** Back to the document's own camera, as opened or last saved. */
+    void resetCamera();
+    /** Back to the camera before the last completed orbit, pan, zoom, fly, frame or reset. */
+    void undoView();
 
 signals:
     void frameRendered(const vct::render::FrameStats& stats);
     void cubesDrawn(int count, int levelCount);
     void voxelHovered(const QString& text);
     void rendererFailed(const QString& message);
+    /** Whether undoView() has a camera to go back to. */
+    void viewHistoryChanged(bool canUndo);
 
 protected:
     void initializeGL() override;
@@ -88,6 +103,19 @@ private:
     void releaseGl();
     void startInteraction();
     void setCamera(const render::Camera& camera);
+    /** A camera change in one step (frame, reset): recorded as a gesture of its own. */
+    void jumpTo(const render::Camera& camera);
+    void beginGesture();
+    /** Ends the gesture in progress, if any, once no drag, wheel burst or fly is still part of it. */
+    void endGestureIfIdle();
+    void endGesture();
+    /**
+     * Picks the centre of the orbit just begun from the press position: the surface there (bringing the
+     * look-at point to its depth), else the selection's centre, else the look-at point.
+     */
+    void startOrbit();
+    /** World bounds of the visible nodes' meshes, or of node @p only alone when it is >= 0. */
+    render::Aabb visibleBounds(int only = -1) const;
     void flyStep();
     void hoverVoxel(const QPoint& position);
     /** World ray through a widget position (in the cone-traced half when the inspector splits the view). */
@@ -113,6 +141,14 @@ private:
     QPoint m_pressPosition;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     bool m_movingNode = false;
+    std::optional<glm::vec3> m_pivot; ///< the orbit's centre for the drag in progress, once it has started
+    CameraHistory m_history;
+    std::optional<render::Camera> m_gestureStart;
+    /// A wheel burst is one zoom gesture: it ends once the wheel has been still this long.
+    QTimer m_wheelGestureTimer;
+    /// The camera as this view last knew it: a reset to another one means another scene, whose history this
+    /// is not.
+    render::Camera m_knownCamera;
     std::size_t m_lastCubeCount = 0;
     int m_levelCount = 0;
     QString m_error;

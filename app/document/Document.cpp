@@ -197,6 +197,7 @@ bool Document::newFromScene(const QString& spec, QString* error, float unitScale
 
     m_undoStack.clear();
     m_state = std::move(state);
+    m_savedCamera = m_state.camera;
     m_geometry.clear();
     m_geometry.emplace(geometryKey(source), std::move(scene));
     m_undoStack.setClean();
@@ -272,6 +273,7 @@ bool Document::openProject(const QString& path, QString* error)
 
     m_undoStack.clear();
     m_state = std::move(state);
+    m_savedCamera = m_state.camera;
     m_geometry = std::move(geometry);
     m_undoStack.setClean();
     m_filePath = absolutePath;
@@ -297,6 +299,7 @@ bool Document::saveProject(const QString& path, QString* error)
     const QString absolutePath = QFileInfo(path).absoluteFilePath();
     if (!ProjectFile::save(absolutePath, m_state, error, m_modelRoot))
         return false;
+    m_savedCamera = m_state.camera;
     m_undoStack.setClean();
     m_filePath = absolutePath;
     emit filePathChanged(m_filePath);
@@ -341,12 +344,12 @@ bool Document::addImportedModel(const QString& path, render::Scene loaded, float
     return true;
 }
 
-void Document::setNodeTransform(int node, const NodeTransform& transform)
+void Document::setNodeTransform(int node, const NodeTransform& transform, NodeTransformField field)
 {
     if (node < 0 || std::size_t(node) >= m_state.nodes.size()
         || m_state.nodes[std::size_t(node)].transform == transform)
         return;
-    m_undoStack.push(new SetNodeTransformCommand(this, node, transform));
+    m_undoStack.push(new SetNodeTransformCommand(this, node, transform, field));
 }
 
 void Document::setNodeName(int node, const QString& name)

@@ -2,6 +2,7 @@
 
 #include "ChangeEvent.h"
 #include "DocumentState.h"
+#include "NodeTransformField.h"
 
 #include "scene/Scene.h"
 
@@ -68,7 +69,12 @@ public:
     bool isModified() const { return !m_undoStack.isClean(); }
 
     // Edits: each pushes one undo command.
-    void setNodeTransform(int node, const NodeTransform& transform);
+    /**
+     * `field` is the part the edit changes: consecutive edits of the same field of a node merge into one
+     * step, an edit of another field is a step of its own (NodeTransformField).
+     */
+    void setNodeTransform(
+        int node, const NodeTransform& transform, NodeTransformField field = NodeTransformField::Whole);
     void setNodeName(int node, const QString& name);
     void setNodeVisible(int node, bool visible);
     void setNodeDynamic(int node, bool dynamic);
@@ -81,6 +87,12 @@ public:
     void setSettings(const render::RenderSettings& settings);
     /** Not undoable: moving the view is not an edit (as in Blender and Godot); saved with the project. */
     void setCamera(const render::Camera& camera);
+    /**
+     * The camera as the scene or project was opened or last saved, for View > Reset camera. A copy apart from
+     * state().camera, because that one is what the view moves: after the first orbit it no longer says where
+     * the document's own camera is.
+     */
+    const render::Camera& savedCamera() const { return m_savedCamera; }
 
     /** Current selection (a node index or -1); not part of undo. */
     int selectedNode() const { return m_selectedNode; }
@@ -124,6 +136,7 @@ private:
     QString m_modelRoot;
     QUndoStack m_undoStack;
     QString m_filePath;
+    render::Camera m_savedCamera;
     int m_selectedNode = -1;
 };
 

@@ -18,6 +18,7 @@ using vct::doc::DocumentState;
 using vct::doc::LightNode;
 using vct::doc::LightType;
 using vct::doc::NodeTransform;
+using vct::doc::NodeTransformField;
 using vct::doc::sameDocument;
 
 namespace {
@@ -283,6 +284,44 @@ private slots:
         doc.setNodeTransform(0, before.nodes[0].transform);
         QCOMPARE(doc.undoStack()->count(), 0);
         QVERIFY(sameDocument(before, doc.state()));
+    }
+
+    void transformFieldsAreSeparateSteps()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        const NodeTransform before = doc.state().nodes[0].transform;
+        NodeTransform t = before;
+        // Two edits of X (typing "1", then "12"), then Y, then X again: three steps.
+        for (float x : { 1.0f, 12.0f }) {
+            t.translation.x = x;
+            doc.setNodeTransform(0, t, NodeTransformField::TranslationX);
+        }
+        QCOMPARE(doc.undoStack()->count(), 1);
+        t.translation.y = 2.0f;
+        doc.setNodeTransform(0, t, NodeTransformField::TranslationY);
+        t.translation.x = 3.0f;
+        doc.setNodeTransform(0, t, NodeTransformField::TranslationX);
+        QCOMPARE(doc.undoStack()->count(), 3);
+        // A viewport drag after a panel edit is a step of its own too.
+        t.translation.z = 4.0f;
+        doc.setNodeTransform(0, t);
+        QCOMPARE(doc.undoStack()->count(), 4);
+        t.rotationDeg.y = 30.0f;
+        doc.setNodeTransform(0, t, NodeTransformField::RotationY);
+        t.scale = glm::vec3(2.0f);
+        doc.setNodeTransform(0, t, NodeTransformField::UniformScale);
+        QCOMPARE(doc.undoStack()->count(), 6);
+        QVERIFY(doc.undoStack()->text(4).startsWith(QStringLiteral("Rotate ")));
+        QVERIFY(doc.undoStack()->text(5).startsWith(QStringLiteral("Scale ")));
+
+        doc.undoStack()->undo();
+        QCOMPARE(doc.state().nodes[0].transform.scale, before.scale);
+        QCOMPARE(doc.state().nodes[0].transform.rotationDeg.y, 30.0f);
+        doc.undoStack()->setIndex(2);
+        QCOMPARE(doc.state().nodes[0].transform.translation, glm::vec3(12.0f, 2.0f, before.translation.z));
+        doc.undoStack()->setIndex(0);
+        QVERIFY(doc.state().nodes[0].transform == before);
     }
 
     void materialEditsMerge()

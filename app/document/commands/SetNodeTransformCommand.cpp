@@ -7,13 +7,40 @@
 
 namespace vct::doc {
 
-SetNodeTransformCommand::SetNodeTransformCommand(Document* document, int node, const NodeTransform& transform)
+namespace {
+
+const char* verbFor(NodeTransformField field)
+{
+    switch (field) {
+    case NodeTransformField::RotationX:
+    case NodeTransformField::RotationY:
+    case NodeTransformField::RotationZ:
+        return QT_TRANSLATE_NOOP("SetNodeTransformCommand", "Rotate %1");
+    case NodeTransformField::ScaleX:
+    case NodeTransformField::ScaleY:
+    case NodeTransformField::ScaleZ:
+    case NodeTransformField::UniformScale:
+        return QT_TRANSLATE_NOOP("SetNodeTransformCommand", "Scale %1");
+    case NodeTransformField::Whole:
+    case NodeTransformField::TranslationX:
+    case NodeTransformField::TranslationY:
+    case NodeTransformField::TranslationZ:
+        break;
+    }
+    return QT_TRANSLATE_NOOP("SetNodeTransformCommand", "Move %1");
+}
+
+} // namespace
+
+SetNodeTransformCommand::SetNodeTransformCommand(
+    Document* document, int node, const NodeTransform& transform, NodeTransformField field)
     : m_document(document)
     , m_nodeId(document->state().nodes.at(node).id)
+    , m_field(field)
     , m_before(document->state().nodes.at(node).transform)
     , m_after(transform)
 {
-    setText(QCoreApplication::translate("SetNodeTransformCommand", "Move %1")
+    setText(QCoreApplication::translate("SetNodeTransformCommand", verbFor(field))
                 .arg(document->state().nodes.at(node).name));
 }
 
@@ -35,7 +62,7 @@ int SetNodeTransformCommand::id() const
 bool SetNodeTransformCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const SetNodeTransformCommand*>(other);
-    if (next->m_nodeId != m_nodeId)
+    if (next->m_nodeId != m_nodeId || next->m_field != m_field)
         return false;
     m_after = next->m_after;
     // A drag that ends where it started is no edit: the stack drops the command.

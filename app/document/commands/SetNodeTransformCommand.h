@@ -1,6 +1,7 @@
 #pragma once
 
 #include "NodeTransform.h"
+#include "NodeTransformField.h"
 
 #include <QUndoCommand>
 
@@ -9,12 +10,14 @@ namespace vct::doc {
 class Document;
 
 /**
- * Moves, rotates or scales one node. Consecutive commands on the same node merge into one undo step, so a
- * gizmo or slider drag is undone at once. The node is found by id, so the command survives index shifts.
+ * Moves, rotates or scales one node. Consecutive commands on the same node and field merge into one undo
+ * step, so a drag or a spin box's steps are undone at once, while an edit of another field is a step of its
+ * own. The node is found by id, so the command survives index shifts.
  */
 class SetNodeTransformCommand : public QUndoCommand {
 public:
-    SetNodeTransformCommand(Document* document, int node, const NodeTransform& transform);
+    SetNodeTransformCommand(Document* document, int node, const NodeTransform& transform,
+        NodeTransformField field = NodeTransformField::Whole);
 
     void redo() override;
     void undo() override;
@@ -26,6 +29,7 @@ private:
 
     Document* m_document;
     quint64 m_nodeId;
+    NodeTransformField m_field;
     NodeTransform m_before;
     NodeTransform m_after;
 };
