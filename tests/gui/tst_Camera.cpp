@@ -1,3 +1,4 @@
+#include "EditorTestSetup.h"
 #include "TestSupport.h"
 
 #include "ui/MainWindow.h"
@@ -42,17 +43,7 @@ class CameraTest : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        // The viewport's renderer needs 4.5 core; Qt must know before the application exists.
-        QSurfaceFormat format;
-        format.setVersion(4, 5);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-        format.setDepthBufferSize(24);
-        QSurfaceFormat::setDefaultFormat(format);
-        qputenv("VCT_NO_DIALOGS", "1");
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { test::prepareEditorApplication(); }
 
 private slots:
     void initTestCase();

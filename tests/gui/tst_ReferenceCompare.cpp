@@ -1,3 +1,4 @@
+#include "EditorTestSetup.h"
 #include "TestSupport.h"
 
 #include "ui/AccuracyChartDock.h"
@@ -37,16 +38,7 @@ class ReferenceCompareTest : public QObject {
     Q_OBJECT
 
 public:
-    static void initMain()
-    {
-        QSurfaceFormat format;
-        format.setVersion(4, 5);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-        format.setDepthBufferSize(24);
-        QSurfaceFormat::setDefaultFormat(format);
-        qputenv("VCT_NO_DIALOGS", "1");
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { test::prepareEditorApplication(); }
 
 private slots:
     void initTestCase();
