@@ -127,8 +127,10 @@ float pointLightSoftVisibility(int i, vec3 p, vec3 n, float radius)
         vec2 o = softShadowTap(k) * kernel;
         vec3 dir = normalize(axis + o.x * u + o.y * v);
         float across = dot(dir, n);
-        float t = across < -1e-3 ? dot(fromLight, n) / across : receiver;
-        t = across < -1e-3 ? min(t, 2.0 * receiver) : receiver;
+        // Where the tap's ray meets the receiver's plane; a plane facing away (t <= 0) or edge-on takes the
+        // receiver's own distance, as a negative t would read the opposite cube face.
+        float t = across < -1e-3 ? dot(fromLight, n) / across : -1.0;
+        t = t > 0.0 ? min(t, 2.0 * receiver) : receiver;
         lit += pointLightHardVisibility(i, dir * t);
     }
     return lit / float(kSoftShadowTaps);

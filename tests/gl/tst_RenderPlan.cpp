@@ -23,6 +23,7 @@ private slots:
     void cameraOnlyReusesEverythingButPerPixelWork();
     void movedLightKeepsVoxels();
     void brighterLightKeepsShadowMaps();
+    void movedRectLightKeepsVoxelsAndShadowMaps();
     void movedDynamicObjectRedoesOnlyItsLayer();
     void editedMaterialRedoesOnlyLayersUsingIt();
     void glossyMaterialAddsSpecularCones();
@@ -156,6 +157,32 @@ void RenderPlanTest::brighterLightKeepsShadowMaps()
     expectAction("voxelize", "reused");
     expectAction("inject light", "run");
     expectSameAsForced("brighter light");
+}
+
+// A rectangle light is no geometry and has no shadow map: adding and moving one re-injects and re-traces its
+// shadows, and keeps the voxels and the point light's shadow maps.
+void RenderPlanTest::movedRectLightKeepsVoxelsAndShadowMaps()
+{
+    render::SurfaceLight rect;
+    rect.centre = m_scene.pointLights[0].position + glm::vec3(0.0f, 0.1f, 0.0f);
+    rect.width = 0.3f;
+    rect.height = 0.2f;
+    rect.radiance = glm::vec3(4.0f);
+    m_scene.surfaceLights = { rect };
+    for (const char* what : { "added rect light", "moved rect light" }) {
+        m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
+        planned();
+        expectAction("shadow maps", "reused");
+        expectAction("voxelize", "reused");
+        expectAction("inject light", "run");
+        expectAction("area-light shadows", "run");
+        expectSameAsForced(what);
+        m_scene.surfaceLights[0].centre.x += 0.1f;
+    }
+    m_scene.surfaceLights.clear();
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
+    planned();
+    expectAction("area-light shadows", "skipped");
 }
 
 void RenderPlanTest::movedDynamicObjectRedoesOnlyItsLayer()
