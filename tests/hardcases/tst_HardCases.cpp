@@ -219,6 +219,11 @@ void HardCasesTest::extremeLightsAndMaterials_data()
     QTest::newRow("non-finite emission") << 10;
     QTest::newRow("10,000 emissive triangles") << 11;
     QTest::newRow("emitter wider than the room") << 12;
+    QTest::newRow("light radius larger than the scene") << 13;
+    QTest::newRow("sun 89 degrees across") << 14;
+    QTest::newRow("rect light 1e4 m wide") << 15;
+    QTest::newRow("surface lights without size or direction") << 16;
+    QTest::newRow("rect light behind a wall, facing away") << 17;
 }
 
 void HardCasesTest::extremeLightsAndMaterials()
@@ -310,6 +315,53 @@ void HardCasesTest::extremeLightsAndMaterials()
         scene.meshes.push_back(test::makeTriangles(tiles, int(scene.materials.size()) - 1));
         break;
     }
+    case 13: // the room inside the light: every receiver within its radius sees it unshadowed
+        scene.pointLights[0].radius = 100.0f;
+        bound = 1e3f;
+        break;
+    case 14: {
+        render::DirectionalLight sun;
+        sun.direction = glm::vec3(0.2f, -1.0f, 0.1f);
+        sun.irradiance = glm::vec3(3.0f);
+        sun.angularDiameterDeg = 89.0f;
+        scene.directionalLights.push_back(sun);
+        break;
+    }
+    case 15: {
+        render::SurfaceLight rect;
+        rect.centre = glm::vec3(0.0f, 0.9f, 0.0f);
+        rect.width = rect.height = 1e4f;
+        rect.radiance = glm::vec3(1.0f);
+        scene.surfaceLights.push_back(rect);
+        scene.pointLights.clear();
+        bound = 1e3f;
+        break;
+    }
+    case 16: { // none of these can emit: no area, no direction, no finite position; counted, not drawn
+        render::SurfaceLight bad;
+        bad.radiance = glm::vec3(1.0f);
+        bad.width = 0.0f;
+        scene.surfaceLights.push_back(bad);
+        bad.width = 1.0f;
+        bad.direction = glm::vec3(0.0f);
+        scene.surfaceLights.push_back(bad);
+        bad.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+        bad.centre = glm::vec3(kNaN);
+        scene.surfaceLights.push_back(bad);
+        bad.shape = render::SurfaceLight::Shape::Disk;
+        bad.centre = glm::vec3(0.0f, 0.9f, 0.0f);
+        bad.width = kInf;
+        scene.surfaceLights.push_back(bad);
+        break;
+    }
+    case 17: { // outside the room's ceiling, facing up: it lights nothing inside
+        render::SurfaceLight rect;
+        rect.centre = glm::vec3(0.0f, 1.5f, 0.0f);
+        rect.direction = glm::vec3(0.0f, 1.0f, 0.0f);
+        rect.radiance = glm::vec3(5.0f);
+        scene.surfaceLights.push_back(rect);
+        break;
+    }
     case 12: { // one emitter far larger than the room it lights, facing down into it
         render::Material lamp;
         lamp.emission = glm::vec3(1.0f);
@@ -333,6 +385,9 @@ void HardCasesTest::extremeLightsAndMaterials()
             QVERIFY(lights.droppedTriangles == 2 && lights.lights.size() == 1);
         if (kind == 11)
             QVERIFY(!lights.meshEmittersAnalytic() && !lights.note.empty());
+        if (kind == 16)
+            QVERIFY(
+                lights.droppedSurfaceLights == 4 && lights.surfaceLightCount == 0 && !lights.note.empty());
     }
     if (kind == 2)
         QCOMPARE(io::ImageMetrics::meanLuminance(image), 0.0);
