@@ -74,6 +74,7 @@ void ColorButton::openDialog()
         dialog, &QColorDialog::currentColorChanged, this, [this](const QColor& c) { pick(fromQColor(c)); });
     connect(dialog, &QColorDialog::colorSelected, this, [this](const QColor& c) { pick(fromQColor(c)); });
     connect(dialog, &QDialog::rejected, this, [this, original] { pick(original); });
+    connect(dialog, &QDialog::finished, this, &ColorButton::editingFinished);
     dialog->open();
 }
 

@@ -27,6 +27,8 @@ public:
 signals:
     /** The user picked a colour (linear RGB); emitted for every live preview step of the dialog too. */
     void colorChanged(const glm::vec3& linear);
+    /** The dialog closed, picked or cancelled: its live preview steps were one gesture. */
+    void editingFinished();
 
 private:
     void openDialog();

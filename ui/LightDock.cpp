@@ -102,9 +102,9 @@ void setSpinValue(QDoubleSpinBox* spin, double value)
     }
 }
 
-/** Three compact spin boxes labelled X, Y, Z. */
-QWidget* makeVectorRow(
-    std::array<QDoubleSpinBox*, 3>& spins, double min, double max, const QString& suffix, const QString& tip)
+/** Three compact spin boxes labelled X, Y, Z, named `name` and the axis. */
+QWidget* makeVectorRow(std::array<QDoubleSpinBox*, 3>& spins, const QString& name, double min, double max,
+    const QString& suffix, const QString& tip)
 {
     auto* row = new QWidget;
     auto* layout = new QHBoxLayout(row);
@@ -113,6 +113,7 @@ QWidget* makeVectorRow(
     const char* axes[] = { "X", "Y", "Z" };
     for (int i = 0; i < 3; ++i) {
         auto* spin = new QDoubleSpinBox;
+        spin->setObjectName(name + QLatin1String(axes[i]));
         spin->setRange(min, max);
         spin->setDecimals(3);
         spin->setSingleStep(0.05);
@@ -225,8 +226,9 @@ LightDock::LightDock(QWidget* parent)
     m_areaRotation->setToolTip(
         tr("Turns the rect about its direction; at 0° its width runs along the horizontal axis across the "
            "direction (world X for a light facing straight up or down)"));
-    m_positionRow = makeVectorRow(m_position, -1.0e4, 1.0e4, QStringLiteral(" m"), tr("Position in metres"));
-    m_directionRow = makeVectorRow(m_direction, -1.0e3, 1.0e3, QString(),
+    m_positionRow = makeVectorRow(m_position, QStringLiteral("lightPosition"), -1.0e4, 1.0e4,
+        QStringLiteral(" m"), tr("Position in metres"));
+    m_directionRow = makeVectorRow(m_direction, QStringLiteral("lightDirection"), -1.0e3, 1.0e3, QString(),
         tr("The way the light travels (need not be unit length; zero is not allowed)"));
     m_color = new ColorButton;
     m_color->setObjectName(QStringLiteral("lightColor"));
@@ -288,59 +290,80 @@ LightDock::LightDock(QWidget* parent)
     connect(m_model, &QAbstractItemModel::modelReset, this, &LightDock::attachList);
     connect(m_list->selectionModel(), &QItemSelectionModel::currentChanged, this, &LightDock::loadLight);
 
+    using Field = doc::LightField;
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         const QString name = m_name->text().trimmed();
-        applyEdit([&](doc::LightNode& l) { l.name = name; });
+        applyEdit(Field::Name, [&](doc::LightNode& l) { l.name = name; });
+        // Committed: a reload (an undo) may show the document's name again.
+        m_name->setModified(false);
     });
     connect(m_type, &QComboBox::currentIndexChanged, this, [this](int row) {
         if (row < 0)
             return;
         const auto type = doc::LightType(m_type->itemData(row).toInt());
-        applyEdit([&](doc::LightNode& l) { l.type = type; });
+        applyEdit(Field::Type, [&](doc::LightNode& l) { l.type = type; });
         loadLight(); // The rows shown and the intensity's name and unit follow the type.
     });
+    constexpr Field positionFields[] = { Field::PositionX, Field::PositionY, Field::PositionZ };
+    constexpr Field directionFields[] = { Field::DirectionX, Field::DirectionY, Field::DirectionZ };
     for (std::size_t i = 0; i < 3; ++i) {
         connect(m_position[i], &QDoubleSpinBox::valueChanged, this,
-            [this, i](double v) { applyEdit([&](doc::LightNode& l) { l.position[int(i)] = float(v); }); });
-        connect(m_direction[i], &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-            applyEdit([&](doc::LightNode& l) {
-                glm::vec3 d = l.direction;
-                d[int(i)] = float(v);
-                // A zero direction has no meaning; keep the last usable one (the spin box is reloaded).
-                if (d != glm::vec3(0.0f))
-                    l.direction = d;
+            [this, i, field = positionFields[i]](
+                double v) { applyEdit(field, [&](doc::LightNode& l) { l.position[int(i)] = float(v); }); });
+        connect(m_direction[i], &QDoubleSpinBox::valueChanged, this,
+            [this, i, field = directionFields[i]](double v) {
+                applyEdit(field, [&](doc::LightNode& l) {
+                    glm::vec3 d = l.direction;
+                    d[int(i)] = float(v);
+                    // A zero direction has no meaning; keep the last usable one (the spin box is reloaded).
+                    if (d != glm::vec3(0.0f))
+                        l.direction = d;
+                });
             });
-        });
     }
     // Inner never beyond outer: editing one carries the other along, as one edit.
     connect(m_spotInner, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        applyEdit([&](doc::LightNode& l) {
+        applyEdit(Field::SpotInner, [&](doc::LightNode& l) {
             l.spotInnerDeg = float(v);
             l.spotOuterDeg = std::max(l.spotOuterDeg, l.spotInnerDeg);
         });
     });
     connect(m_spotOuter, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        applyEdit([&](doc::LightNode& l) {
+        applyEdit(Field::SpotOuter, [&](doc::LightNode& l) {
             l.spotOuterDeg = float(v);
             l.spotInnerDeg = std::min(l.spotInnerDeg, l.spotOuterDeg);
         });
     });
     connect(m_radius, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.radius = float(v); }); });
-    connect(m_angularDiameter, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.angularDiameterDeg = float(v); }); });
-    connect(m_areaWidth, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaWidth = float(v); }); });
-    connect(m_areaHeight, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaHeight = float(v); }); });
-    connect(m_areaRotation, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.areaRotationDeg = float(v); }); });
+        [this](double v) { applyEdit(Field::Radius, [&](doc::LightNode& l) { l.radius = float(v); }); });
+    connect(m_angularDiameter, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit(Field::AngularDiameter, [&](doc::LightNode& l) { l.angularDiameterDeg = float(v); });
+    });
+    connect(m_areaWidth, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit(Field::AreaWidth, [&](doc::LightNode& l) { l.areaWidth = float(v); });
+    });
+    connect(m_areaHeight, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit(Field::AreaHeight, [&](doc::LightNode& l) { l.areaHeight = float(v); });
+    });
+    connect(m_areaRotation, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit(Field::AreaRotation, [&](doc::LightNode& l) { l.areaRotationDeg = float(v); });
+    });
     connect(m_color, &ColorButton::colorChanged, this,
-        [this](const glm::vec3& c) { applyEdit([&](doc::LightNode& l) { l.color = c; }); });
-    connect(m_intensity, &QDoubleSpinBox::valueChanged, this,
-        [this](double v) { applyEdit([&](doc::LightNode& l) { l.intensity = float(v); }); });
+        [this](const glm::vec3& c) { applyEdit(Field::Color, [&](doc::LightNode& l) { l.color = c; }); });
+    connect(m_intensity, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        applyEdit(Field::Intensity, [&](doc::LightNode& l) { l.intensity = float(v); });
+    });
     connect(m_shadows, &QCheckBox::toggled, this,
-        [this](bool on) { applyEdit([&](doc::LightNode& l) { l.castsShadows = on; }); });
+        [this](bool on) { applyEdit(Field::Shadows, [&](doc::LightNode& l) { l.castsShadows = on; }); });
+    // Enter, leaving a box or closing the colour dialog ends the gesture: the next edit of the same field is
+    // an undo step of its own.
+    const auto endGesture = [this] {
+        if (m_document)
+            m_document->endEditGesture();
+    };
+    for (QDoubleSpinBox* spin : m_editors->findChildren<QDoubleSpinBox*>())
+        connect(spin, &QDoubleSpinBox::editingFinished, this, endGesture);
+    connect(m_color, &ColorButton::editingFinished, this, endGesture);
 
     setDocument(nullptr);
 }
@@ -434,7 +457,7 @@ void LightDock::attachList()
     loadLight();
 }
 
-void LightDock::applyEdit(const std::function<void(doc::LightNode&)>& change)
+void LightDock::applyEdit(doc::LightField field, const std::function<void(doc::LightNode&)>& change)
 {
     const int index = currentLight();
     if (!m_document || index < 0 || index >= int(m_document->state().lights.size()))
@@ -447,7 +470,7 @@ void LightDock::applyEdit(const std::function<void(doc::LightNode&)>& change)
         return;
     }
     m_applying = true;
-    m_document->setLight(index, light);
+    m_document->setLight(index, light, field);
     m_applying = false;
 }
 
@@ -477,7 +500,8 @@ void LightDock::loadLight()
 
     const QSignalBlocker b1(m_name), b2(m_type), b3(m_shadows), b4(m_intensity), b5(m_spotInner),
         b6(m_spotOuter);
-    if (!m_name->hasFocus())
+    // Not over a name being typed; once committed (or untouched) it shows the document's, focused or not.
+    if (!m_name->hasFocus() || !m_name->isModified())
         m_name->setText(l.name);
     m_type->setCurrentIndex(m_type->findData(int(l.type)));
     for (int i = 0; i < 3; ++i) {

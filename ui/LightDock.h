@@ -30,7 +30,9 @@ class SceneTreeModel;
  * an irradiance in W/m²; rect and disk lights a centre, the direction their front face looks, a size in
  * metres (a disk's diameter), a rect's rotation about its direction, and a radiance in W/(m² sr). Point and
  * spot lights also have a radius in metres and directional lights an angular diameter in degrees, which
- * soften their shadows. Every edit is one Document::setLight / addLight / removeLight.
+ * soften their shadows. Every edit is one Document::setLight / addLight / removeLight; setLight names the
+ * field, so a run of edits of one field in one gesture (until Enter or the box losing focus) is one undo step
+ * and an edit of another field the next.
  */
 class LightDock : public QDockWidget {
     Q_OBJECT
@@ -61,7 +63,7 @@ private:
     void attachList();
     void loadLight();
     void addLight(doc::LightType type);
-    void applyEdit(const std::function<void(doc::LightNode&)>& change);
+    void applyEdit(doc::LightField field, const std::function<void(doc::LightNode&)>& change);
 
     QPointer<doc::Document> m_document;
     QMetaObject::Connection m_changedConnection;

@@ -1,13 +1,16 @@
 #include "MainWindow.h"
 
+#include "AboutDialog.h"
 #include "AccuracyChartDock.h"
 #include "LightDock.h"
 #include "MaterialDock.h"
 #include "ReferenceCompareDock.h"
 #include "RenderSettingsDock.h"
 #include "SceneGraphDock.h"
+#include "ShortcutsDialog.h"
 #include "StatsDock.h"
 #include "TransformDock.h"
+#include "UndoShortcutFilter.h"
 #include "ViewportWidget.h"
 #include "VoxelInspectorDock.h"
 
@@ -152,6 +155,9 @@ void MainWindow::buildDocks()
     connect(m_viewport, &ViewportWidget::cubesDrawn, m_inspectorDock, &VoxelInspectorDock::setCubeCount);
     connect(m_viewport, &ViewportWidget::voxelHovered, m_inspectorDock, &VoxelInspectorDock::setHoverText);
     connect(m_viewport, &ViewportWidget::frameRendered, m_statsDock, &StatsDock::showStats);
+    // Where the eye is: a refusal shown only inside the dock can sit below its fold.
+    connect(m_settingsDock, &RenderSettingsDock::settingRefused, this,
+        [this](const QString& reason) { statusBar()->showMessage(reason, 10000); });
 }
 
 void MainWindow::buildMenus()
@@ -198,9 +204,18 @@ void MainWindow::buildMenus()
     QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    // Ctrl+Shift+Z and Ctrl+Y redo on every platform, whichever of them its convention lists.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& key :
+        { QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y) })
+        if (!redoKeys.contains(key))
+            redoKeys.append(key);
+    redo->setShortcuts(redoKeys);
+    undo->setObjectName(QStringLiteral("undoAction"));
+    redo->setObjectName(QStringLiteral("redoAction"));
     edit->addAction(undo);
     edit->addAction(redo);
+    qApp->installEventFilter(new UndoShortcutFilter(this, undo, redo));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : { static_cast<QDockWidget*>(m_sceneDock),
@@ -248,6 +263,14 @@ void MainWindow::buildMenus()
         m_accuracyDock->show();
         m_accuracyDock->raise();
     });
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keyboard shortcuts"), QKeySequence::HelpContents, this,
+            [this] { ShortcutsDialog::showFor(this); })
+        ->setObjectName(QStringLiteral("shortcutsAction"));
+    QAction* about = help->addAction(tr("&About VCT Studio"), this, [this] { AboutDialog::showFor(this); });
+    about->setObjectName(QStringLiteral("aboutAction"));
+    about->setMenuRole(QAction::AboutRole);
 }
 
 void MainWindow::openInitial(const QString& specOrProject, float unitScale)

@@ -133,13 +133,14 @@ MaterialDock::MaterialDock(QWidget* parent)
     layout->addStretch();
     setWidget(body);
 
-    const auto edit = [this](auto change) {
+    using Field = doc::MaterialField;
+    const auto edit = [this](Field field, auto change) {
         if (!m_document || m_material < 0 || m_material >= int(m_document->state().materials.size()))
             return;
         render::Material material = m_document->state().materials[std::size_t(m_material)];
         change(material);
         m_applying = true;
-        m_document->setMaterial(m_material, material);
+        m_document->setMaterial(m_material, material, field);
         m_applying = false;
         updateWarning();
     };
@@ -150,17 +151,19 @@ MaterialDock::MaterialDock(QWidget* parent)
         setCurrentMaterial(m_combo->itemData(row).toInt());
     });
     connect(m_albedo, &ColorButton::colorChanged, this,
-        [edit](const glm::vec3& c) { edit([&](render::Material& m) { m.albedo = c; }); });
+        [edit](const glm::vec3& c) { edit(Field::Albedo, [&](render::Material& m) { m.albedo = c; }); });
     connect(m_specular, &ColorButton::colorChanged, this,
-        [edit](const glm::vec3& c) { edit([&](render::Material& m) { m.specular = c; }); });
+        [edit](const glm::vec3& c) { edit(Field::Specular, [&](render::Material& m) { m.specular = c; }); });
     connect(m_shininess, &QDoubleSpinBox::valueChanged, this,
-        [edit](double v) { edit([&](render::Material& m) { m.shininess = float(v); }); });
-    connect(m_emissionColor, &ColorButton::colorChanged, this,
-        [this, edit] { edit([&](render::Material& m) { m.emission = uiEmission(); }); });
-    connect(m_strength, &QDoubleSpinBox::valueChanged, this,
-        [this, edit] { edit([&](render::Material& m) { m.emission = uiEmission(); }); });
+        [edit](double v) { edit(Field::Shininess, [&](render::Material& m) { m.shininess = float(v); }); });
+    connect(m_emissionColor, &ColorButton::colorChanged, this, [this, edit] {
+        edit(Field::EmissionColor, [&](render::Material& m) { m.emission = uiEmission(); });
+    });
+    connect(m_strength, &QDoubleSpinBox::valueChanged, this, [this, edit] {
+        edit(Field::EmissionStrength, [&](render::Material& m) { m.emission = uiEmission(); });
+    });
     connect(m_doubleSided, &QCheckBox::toggled, this,
-        [edit](bool on) { edit([&](render::Material& m) { m.doubleSided = on; }); });
+        [edit](bool on) { edit(Field::DoubleSided, [&](render::Material& m) { m.doubleSided = on; }); });
     connect(m_emissive, &QCheckBox::toggled, this, [this, edit](bool on) {
         m_emissionColor->setEnabled(on);
         m_strength->setEnabled(on);
@@ -173,8 +176,18 @@ MaterialDock::MaterialDock(QWidget* parent)
         } else {
             m_emissionMemory[m_material] = { m_emissionColor->color(), m_strength->value() };
         }
-        edit([&](render::Material& m) { m.emission = uiEmission(); });
+        edit(Field::Emissive, [&](render::Material& m) { m.emission = uiEmission(); });
     });
+    // Enter, leaving a box or closing a colour dialog ends the gesture: the next edit of the same field is
+    // an undo step of its own.
+    const auto endGesture = [this] {
+        if (m_document)
+            m_document->endEditGesture();
+    };
+    for (QDoubleSpinBox* spin : { m_shininess, m_strength })
+        connect(spin, &QDoubleSpinBox::editingFinished, this, endGesture);
+    for (ColorButton* button : { m_albedo, m_specular, m_emissionColor })
+        connect(button, &ColorButton::editingFinished, this, endGesture);
 
     setDocument(nullptr);
 }
@@ -185,6 +198,7 @@ void MaterialDock::setDocument(doc::Document* document)
     disconnect(m_selectionConnection);
     m_document = document;
     m_emissionMemory.clear();
+    m_shownMaterial = -1;
     if (m_document) {
         m_changedConnection
             = connect(m_document, &doc::Document::changed, this, &MaterialDock::onDocumentChanged);
@@ -225,6 +239,7 @@ void MaterialDock::onDocumentChanged(const doc::ChangeEvent& event)
     switch (event.kind) {
     case Kind::Reset:
         m_emissionMemory.clear();
+        m_shownMaterial = -1;
         rebuildCombo();
         setCurrentMaterial(m_document->state().materials.empty() ? -1 : 0);
         onSelectionChanged(m_document->selectedNode());
@@ -284,12 +299,29 @@ void MaterialDock::loadMaterial()
     const bool emissive = m.isEmissive();
     m_emissive->setChecked(emissive);
     if (emissive) {
-        // Keep the user's split into colour and strength when it still multiplies out to the stored value;
-        // otherwise (undo, another material) split so the brightest channel of the colour is 1.
-        if (!nearlyEqual(m_emissionColor->color() * float(m_strength->value()), m.emission)) {
-            const float strength = maxComponent(m.emission);
-            m_emissionColor->setColor(m.emission / strength);
-            setSpinValue(m_strength, double(strength));
+        // Another material splits so that the brightest channel of the colour is 1. The same one keeps the
+        // user's split when it still multiplies out to the stored value, else keeps the colour or the
+        // strength when the other alone explains it, so that undoing one shows the other as it was.
+        const glm::vec3 color = m_emissionColor->color();
+        const float strength = float(m_strength->value());
+        if (m_shownMaterial != m_material) {
+            const float brightest = maxComponent(m.emission);
+            m_emissionColor->setColor(m.emission / brightest);
+            setSpinValue(m_strength, double(brightest));
+        } else if (!nearlyEqual(color * strength, m.emission)) {
+            const float colorMax = maxComponent(color);
+            const float strengthForColor = colorMax > 0.0f ? maxComponent(m.emission) / colorMax : 0.0f;
+            const glm::vec3 colorForStrength = strength > 0.0f ? m.emission / strength : glm::vec3(-1.0f);
+            if (strengthForColor > 0.0f && nearlyEqual(color * strengthForColor, m.emission)) {
+                setSpinValue(m_strength, double(strengthForColor));
+            } else if (maxComponent(colorForStrength) <= 1.0f && colorForStrength.x >= 0.0f
+                && colorForStrength.y >= 0.0f && colorForStrength.z >= 0.0f) {
+                m_emissionColor->setColor(colorForStrength);
+            } else {
+                const float brightest = maxComponent(m.emission);
+                m_emissionColor->setColor(m.emission / brightest);
+                setSpinValue(m_strength, double(brightest));
+            }
         }
     } else {
         const auto it = m_emissionMemory.find(m_material);
@@ -299,6 +331,7 @@ void MaterialDock::loadMaterial()
     }
     m_emissionColor->setEnabled(emissive);
     m_strength->setEnabled(emissive);
+    m_shownMaterial = m_material;
     updateWarning();
 }
 

@@ -27,8 +27,9 @@ class ColorButton;
  * Edits one material: the selected node's, or any other picked in the combo. Colours are linear RGB in
  * [0, 1]. Emission is edited as an Emissive switch times colour times strength (W/(m²·sr)); switching it
  * off stores zero emission in the document but keeps the colour and strength here, per material, so
- * switching it back on restores them. Every change is one Document::setMaterial call; consecutive changes to
- * one material merge into one undo step in the document.
+ * switching it back on restores them. Every change is one Document::setMaterial call naming its field: a run
+ * of changes to one field in one gesture (until Enter, the box losing focus or the colour dialog closing) is
+ * one undo step, a change of another field the next.
  */
 class MaterialDock : public QDockWidget {
     Q_OBJECT
@@ -60,6 +61,7 @@ private:
     QMetaObject::Connection m_changedConnection;
     QMetaObject::Connection m_selectionConnection;
     int m_material = -1;
+    int m_shownMaterial = -1; ///< The material the editors show, to tell a reload from a switch.
     bool m_applying = false; ///< True while our own setMaterial runs: the editors already show the result.
 
     /** Emission colour and strength remembered while a material's Emissive switch is off, by material index.

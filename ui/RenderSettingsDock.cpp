@@ -14,9 +14,11 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
+#include <QToolTip>
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -25,6 +27,10 @@ namespace vct::ui {
 namespace {
 
 using render::DebugView;
+
+// RenderSettings::validate()'s range for voxel_budget_mb.
+constexpr int kMinBudgetMiB = 64;
+constexpr int kMaxBudgetMiB = 1 << 20;
 
 struct ViewEntry {
     DebugView view;
@@ -67,6 +73,16 @@ QCheckBox* makeCheck(const QString& text, const QString& tip)
     auto* check = new QCheckBox(text);
     check->setToolTip(tip);
     return check;
+}
+
+/** As the budget reads: whole MiB below a GiB, GiB to one decimal from there. */
+QString memoryText(std::uint64_t bytes)
+{
+    constexpr std::uint64_t kMiB = std::uint64_t(1) << 20;
+    constexpr std::uint64_t kGiB = kMiB << 10;
+    if (bytes < kGiB)
+        return QString::number((bytes + kMiB - 1) / kMiB) + QStringLiteral(" MiB");
+    return QString::number(double(bytes) / double(kGiB), 'f', 1) + QStringLiteral(" GiB");
 }
 
 void setSpinValue(QDoubleSpinBox* spin, double value)
@@ -221,6 +237,24 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
         m_view->addItem(tr(entry.label), int(entry.view));
     m_view->setToolTip(tr("Show one term of the image instead of the final result"));
 
+    m_budget = new QSpinBox;
+    m_budget->setObjectName(QStringLiteral("voxelBudget"));
+    m_budget->setRange(kMinBudgetMiB, kMaxBudgetMiB);
+    m_budget->setSingleStep(512);
+    m_budget->setSuffix(QStringLiteral(" MiB"));
+    // Typing 8192 passes through 8, 81 and 819, each a budget the grid would not fit: apply on Enter only.
+    m_budget->setKeyboardTracking(false);
+    m_budget->setToolTip(
+        tr("Most memory the voxel textures may take (voxel_budget_mb). A grid that needs more "
+           "is refused instead of failing in the GL driver; raise it where the GPU has the "
+           "memory."));
+    m_budget->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    m_memoryNeeded = new QLabel;
+    m_memoryNeeded->setObjectName(QStringLiteral("voxelMemoryNeeded"));
+    m_memoryNeeded->setToolTip(
+        tr("What the voxel textures of the current settings take: the grid, anisotropic "
+           "mips, bounces and the irradiance cache all add to it"));
+
     m_problem = new QLabel;
     m_problem->setObjectName(QStringLiteral("settingsProblem"));
     m_problem->setWordWrap(true);
@@ -239,6 +273,10 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     voxelForm->addRow(m_conservative);
     voxelForm->addRow(m_anisotropic);
     voxelForm->addRow(tr("Bounces"), m_bounces);
+    auto* budgetRow = new QHBoxLayout;
+    budgetRow->addWidget(m_budget, 1);
+    budgetRow->addWidget(m_memoryNeeded);
+    voxelForm->addRow(tr("Memory budget"), budgetRow);
     auto [cones, coneForm] = group(tr("Cones"));
     coneForm->addRow(tr("Diffuse cones"), m_coneCount);
     coneForm->addRow(tr("Diffuse aperture"), m_diffuseAperture);
@@ -263,9 +301,10 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(presets);
+    // At the top: below the groups it sat under the fold of a dock of ordinary height.
+    layout->addWidget(m_problem);
     for (QGroupBox* box : { voxels, cones, terms, output })
         layout->addWidget(box);
-    layout->addWidget(m_problem);
     layout->addStretch();
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -283,7 +322,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
             if (row < 0)
                 return;
             const int value = combo->itemData(row).toInt();
-            edit([&](render::RenderSettings& s) { s.*field = value; });
+            edit(combo, [&](render::RenderSettings& s) { s.*field = value; });
         });
     };
     bindCombo(m_resolution, &render::RenderSettings::voxelResolution);
@@ -297,14 +336,17 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
         if (row < 0)
             return;
         const auto view = DebugView(m_view->itemData(row).toInt());
-        edit([view](render::RenderSettings& s) { s.view = view; });
+        edit(m_view, [view](render::RenderSettings& s) { s.view = view; });
     });
     connect(m_coneCount, &QSpinBox::valueChanged, this,
-        [this](int v) { edit([v](render::RenderSettings& s) { s.diffuseConeCount = v; }); });
+        [this](int v) { edit(m_coneCount, [v](render::RenderSettings& s) { s.diffuseConeCount = v; }); });
+    connect(m_budget, &QSpinBox::valueChanged, this,
+        [this](int v) { edit(m_budget, [v](render::RenderSettings& s) { s.voxelBudgetMiB = v; }); });
 
     const auto bindSpin = [this](QDoubleSpinBox* spin, float render::RenderSettings::*field) {
-        connect(spin, &QDoubleSpinBox::valueChanged, this,
-            [this, field](double v) { edit([&](render::RenderSettings& s) { s.*field = float(v); }); });
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spin, field](double v) {
+            edit(spin, [&](render::RenderSettings& s) { s.*field = float(v); });
+        });
     };
     bindSpin(m_diffuseAperture, &render::RenderSettings::diffuseApertureDeg);
     bindSpin(m_specularAperture, &render::RenderSettings::specularApertureDeg);
@@ -312,14 +354,15 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     bindSpin(m_coneOffset, &render::RenderSettings::coneOffsetVoxels);
     bindSpin(m_exposure, &render::RenderSettings::exposure);
     connect(m_maxDistance, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        edit([&](render::RenderSettings& s) {
+        edit(m_maxDistance, [&](render::RenderSettings& s) {
             s.maxDistance = v <= m_maxDistance->minimum() ? -1.0f : float(v);
         });
     });
 
     const auto bindCheck = [this](QCheckBox* check, bool render::RenderSettings::*field) {
-        connect(check, &QCheckBox::toggled, this,
-            [this, field](bool on) { edit([&](render::RenderSettings& s) { s.*field = on; }); });
+        connect(check, &QCheckBox::toggled, this, [this, check, field](bool on) {
+            edit(check, [&](render::RenderSettings& s) { s.*field = on; });
+        });
     };
     bindCheck(m_conservative, &render::RenderSettings::conservativeVoxelization);
     bindCheck(m_anisotropic, &render::RenderSettings::anisotropicMips);
@@ -340,6 +383,7 @@ void RenderSettingsDock::setDocument(doc::Document* document)
     if (m_document)
         m_changedConnection
             = connect(m_document, &doc::Document::changed, this, &RenderSettingsDock::onDocumentChanged);
+    clearRefusals();
     load();
 }
 
@@ -388,28 +432,55 @@ void RenderSettingsDock::applyPreset(Preset preset)
 {
     if (!m_document)
         return;
-    const render::RenderSettings current = m_document->state().settings;
-    const render::RenderSettings next = presetSettings(preset, current);
-    if (!sameSettings(current, next))
-        m_document->setSettings(next);
+    QPushButton* button = preset == Preset::Fast ? m_fast : preset == Preset::Balanced ? m_balanced : m_high;
+    // A budget lowered below what the preset's grid needs refuses the preset like any other edit.
+    apply(button, presetSettings(preset, m_document->state().settings));
     load(); // The preset buttons' checked state follows the values, whether or not anything changed.
 }
 
-void RenderSettingsDock::edit(const std::function<void(render::RenderSettings&)>& change)
+QString RenderSettingsDock::refusalReason(const render::RenderSettings& settings, const QWidget* source) const
+{
+    const std::string problem = settings.validate();
+    if (problem.empty())
+        return {};
+    render::RenderSettings unlimited = settings;
+    unlimited.voxelBudgetMiB = kMaxBudgetMiB;
+    const bool overBudget = settings.voxelBudgetMiB >= kMinBudgetMiB
+        && settings.voxelBudgetMiB <= kMaxBudgetMiB && unlimited.validate().empty();
+    if (!overBudget)
+        return QString::fromStdString(problem);
+    // In the dock's words (grid size, GiB) rather than validate()'s key=value ones; the key still names the
+    // setting for project files and vct-render --set.
+    const QString grid = QString::number(settings.voxelResolution) + QStringLiteral("³");
+    const QString needed = memoryText(settings.voxelMemoryBytes());
+    const QString budget = memoryText(std::uint64_t(settings.voxelBudgetMiB) << 20);
+    if (source == m_budget)
+        return tr(
+            "A voxel budget of %1 is too small: the %2 grid needs %3 of voxel textures (voxel_budget_mb)")
+            .arg(budget, grid, needed);
+    return tr("%1 needs %2 of voxel textures; the budget is %3 (voxel_budget_mb). Raise the memory budget "
+              "if the GPU has the memory.")
+        .arg(grid, needed, budget);
+}
+
+void RenderSettingsDock::edit(QWidget* source, const std::function<void(render::RenderSettings&)>& change)
 {
     if (!m_document)
         return;
-    const render::RenderSettings current = m_document->state().settings;
-    render::RenderSettings next = current;
+    render::RenderSettings next = m_document->state().settings;
     change(next);
-    if (const std::string problem = next.validate(); !problem.empty()) {
-        m_problem->setText(QString::fromStdString(problem));
-        m_problem->show();
-        load();
+    apply(source, next);
+}
+
+void RenderSettingsDock::apply(QWidget* source, const render::RenderSettings& next)
+{
+    if (const QString reason = refusalReason(next, source); !reason.isEmpty()) {
+        refuse(source, reason);
+        load(); // The refused control shows the document's value again.
         return;
     }
-    m_problem->hide();
-    if (sameSettings(current, next))
+    clearRefusals();
+    if (sameSettings(m_document->state().settings, next))
         return;
     m_applying = true;
     m_document->setSettings(next);
@@ -417,9 +488,37 @@ void RenderSettingsDock::edit(const std::function<void(render::RenderSettings&)>
     load(); // Cheap, and keeps the preset buttons in step; equal values are not rewritten.
 }
 
+void RenderSettingsDock::refuse(QWidget* source, const QString& reason)
+{
+    m_problem->setText(reason);
+    m_problem->show();
+    if (source) {
+        if (!m_ownTips.contains(source))
+            m_ownTips.insert(source, source->toolTip());
+        const QString own = m_ownTips.value(source);
+        const QString tip
+            = tr("Refused: %1").arg(reason) + (own.isEmpty() ? QString() : QStringLiteral("\n\n") + own);
+        source->setToolTip(tip);
+        // Shown now, under the control the user just touched: hovering is not how anyone learns of a refusal.
+        if (source->isVisible())
+            QToolTip::showText(source->mapToGlobal(QPoint(0, source->height())), tip, source);
+    }
+    emit settingRefused(reason);
+}
+
+void RenderSettingsDock::clearRefusals()
+{
+    for (auto it = m_ownTips.cbegin(); it != m_ownTips.cend(); ++it)
+        it.key()->setToolTip(it.value());
+    m_ownTips.clear();
+    m_problem->hide();
+}
+
 void RenderSettingsDock::onDocumentChanged(const doc::ChangeEvent& event)
 {
     using Kind = doc::ChangeEvent::Kind;
+    if (event.kind == Kind::Reset)
+        clearRefusals(); // about the settings of the document that was replaced
     if (!m_applying && (event.kind == Kind::Settings || event.kind == Kind::Reset))
         load();
 }
@@ -435,7 +534,7 @@ void RenderSettingsDock::load()
         m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache,
         m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step, m_maxDistance,
         m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap,
-        m_exposure, m_view, m_fast, m_balanced, m_high };
+        m_exposure, m_view, m_budget, m_fast, m_balanced, m_high };
     std::vector<std::unique_ptr<QSignalBlocker>> blockers;
     for (QWidget* w : editors)
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
@@ -468,6 +567,9 @@ void RenderSettingsDock::load()
     selectIntItem(m_shadowMap, s.shadowMapSize, QString::number(s.shadowMapSize) + QStringLiteral("²"));
     setSpinValue(m_exposure, double(s.exposure));
     m_view->setCurrentIndex(m_view->findData(int(s.view)));
+    if (m_budget->value() != s.voxelBudgetMiB)
+        m_budget->setValue(s.voxelBudgetMiB);
+    m_memoryNeeded->setText(tr("needs %1").arg(memoryText(s.voxelMemoryBytes())));
 
     m_fast->setChecked(sameSettings(s, presetSettings(Preset::Fast, s)));
     m_balanced->setChecked(sameSettings(s, presetSettings(Preset::Balanced, s)));

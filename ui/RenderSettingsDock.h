@@ -4,6 +4,7 @@
 #include "document/Document.h"
 
 #include <QDockWidget>
+#include <QHash>
 #include <QPointer>
 
 #include <functional>
@@ -24,7 +25,9 @@ namespace vct::ui {
 /**
  * Every RenderSettings field, grouped as Voxels / Cones / Terms / Output, plus three presets. Each edit
  * builds new settings from the document's current ones and makes one Document::setSettings call; a preset
- * changes several fields in that one call, so it is one undo step.
+ * changes several fields in that one call, so it is one undo step. An edit the settings refuse leaves the
+ * document alone and says why where the user is looking: in the refused control's tooltip (shown at once),
+ * above the groups, and through settingRefused() in the main window's status bar.
  */
 class RenderSettingsDock : public QDockWidget {
     Q_OBJECT
@@ -41,12 +44,27 @@ public:
     void applyPreset(Preset preset);
     /** The fields a preset sets, applied on top of `base` (the rest of `base` is kept). */
     static render::RenderSettings presetSettings(Preset preset, const render::RenderSettings& base);
+    /**
+     * Why `settings` cannot be applied, or an empty string. A grid over the voxel budget names its size, the
+     * memory it needs and the budget; `source` is the control the edit came from (the budget's own spin box
+     * gets a message about the budget).
+     */
+    QString refusalReason(const render::RenderSettings& settings, const QWidget* source) const;
+
+signals:
+    /** An edit from one of the dock's controls was refused, for `reason`; the document is unchanged. */
+    void settingRefused(const QString& reason);
 
 private:
     void onDocumentChanged(const doc::ChangeEvent& event);
     /** Shows the document's settings without emitting edits. */
     void load();
-    void edit(const std::function<void(render::RenderSettings&)>& change);
+    /** Applies the edit from `source`, or refuses it and says why. */
+    void edit(QWidget* source, const std::function<void(render::RenderSettings&)>& change);
+    void apply(QWidget* source, const render::RenderSettings& next);
+    void refuse(QWidget* source, const QString& reason);
+    /** Gives refused controls their own tooltips back and hides the message. */
+    void clearRefusals();
 
     QPointer<doc::Document> m_document;
     QMetaObject::Connection m_changedConnection;
@@ -78,7 +96,11 @@ private:
     QComboBox* m_shadowMap = nullptr;
     QDoubleSpinBox* m_exposure = nullptr;
     QComboBox* m_view = nullptr;
+    QSpinBox* m_budget = nullptr;
+    QLabel* m_memoryNeeded = nullptr;
     QLabel* m_problem = nullptr;
+    /** The own tooltips of controls that now show a refusal. */
+    QHash<QWidget*, QString> m_ownTips;
 };
 
 } // namespace vct::ui

@@ -145,6 +145,12 @@ TransformDock::TransformDock(QWidget* parent)
         applyEdit(Field::UniformScale, [&](doc::NodeTransform& t) { t.scale = glm::vec3(float(v)); });
     });
     connect(m_uniformScale, &QDoubleSpinBox::editingFinished, this, &TransformDock::load);
+    // Enter or leaving a box ends the gesture: the next edit of the same field is an undo step of its own.
+    for (QDoubleSpinBox* spin : m_editors->findChildren<QDoubleSpinBox*>())
+        connect(spin, &QDoubleSpinBox::editingFinished, this, [this] {
+            if (m_document)
+                m_document->endEditGesture();
+        });
 
     setDocument(nullptr);
 }

@@ -402,6 +402,9 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         if (rayThrough(event->position().toPoint(), origin, direction, inInspector))
             m_document->setSelectedNode(sync::pickNode(*m_document, origin, direction).node);
     }
+    // A second drag of the node is an undo step of its own.
+    if (m_movingNode)
+        m_document->endEditGesture();
     m_dragButton = Qt::NoButton;
     m_movingNode = false;
     m_pivot.reset();
@@ -413,6 +416,23 @@ void ViewportWidget::wheelEvent(QWheelEvent* event)
     beginGesture();
     setCamera(CameraController::zoom(m_document->state().camera, float(event->angleDelta().y()) / 120.0f));
     m_wheelGestureTimer.start();
+}
+
+QList<std::pair<QString, QString>> ViewportWidget::inputBindings()
+{
+    // Kept beside keyPressEvent and the mouse handlers: a key added there belongs here too, unless an action
+    // of the main window has it as well (F is View > Frame selection, listed with the actions).
+    return {
+        { tr("W / S"), tr("Fly forward / back (held)") },
+        { tr("A / D"), tr("Fly left / right (held)") },
+        { tr("Q / E"), tr("Fly down / up (held)") },
+        { tr("Left drag"), tr("Orbit about the point under the cursor") },
+        { tr("Middle drag, Shift+drag"), tr("Pan") },
+        { tr("Wheel"), tr("Zoom") },
+        { tr("Click"), tr("Select the object under the cursor") },
+        { tr("Ctrl+drag"), tr("Move the selected object") },
+        { tr("X / Y / Z held with Ctrl+drag"), tr("Move along that world axis only") },
+    };
 }
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event)

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace vct::doc {
 class Document;
@@ -68,6 +69,11 @@ public:
     void setNonFiniteCheck(bool enabled);
     bool nonFiniteCheck() const { return m_nonFiniteCheck; }
     const NonFiniteOverlay* nonFiniteOverlay() const { return m_nonFiniteOverlay; }
+    /**
+     * The keys and mouse gestures the view handles itself rather than through a QAction, as (keys, what they
+     * do): Help > Keyboard shortcuts lists them beside the actions' shortcuts.
+     */
+    static QList<std::pair<QString, QString>> inputBindings();
 
 public slots:
     /** Frames the selected node, or with nothing selected, the whole scene as frameAll() does. */

@@ -172,6 +172,12 @@ std::vector<SceneNode> nodesFromScene(
 Document::Document(QObject* parent)
     : QObject(parent)
 {
+    // Only an undo (or a command dropped as a no-op) lowers the index: a push raises it or merges.
+    connect(&m_undoStack, &QUndoStack::indexChanged, this, [this](int index) {
+        if (index < m_undoIndex)
+            endEditGesture();
+        m_undoIndex = index;
+    });
 }
 
 Document::~Document()
@@ -396,15 +402,15 @@ void Document::deleteNode(int node)
     m_undoStack.push(new DeleteNodeCommand(this, node));
 }
 
-void Document::setMaterial(int index, const render::Material& material)
+void Document::setMaterial(int index, const render::Material& material, MaterialField field)
 {
     if (index < 0 || std::size_t(index) >= m_state.materials.size()
         || sameMaterial(m_state.materials[std::size_t(index)], material))
         return;
-    m_undoStack.push(new SetMaterialCommand(this, index, material));
+    m_undoStack.push(new SetMaterialCommand(this, index, material, field));
 }
 
-void Document::setLight(int index, const LightNode& light)
+void Document::setLight(int index, const LightNode& light, LightField field)
 {
     if (index < 0 || std::size_t(index) >= m_state.lights.size())
         return;
@@ -412,7 +418,7 @@ void Document::setLight(int index, const LightNode& light)
     edited.id = m_state.lights[std::size_t(index)].id;
     if (edited == m_state.lights[std::size_t(index)])
         return;
-    m_undoStack.push(new SetLightCommand(this, index, edited));
+    m_undoStack.push(new SetLightCommand(this, index, edited, field));
 }
 
 void Document::addLight(const LightNode& light)

@@ -2,6 +2,8 @@
 
 #include "ChangeEvent.h"
 #include "DocumentState.h"
+#include "LightField.h"
+#include "MaterialField.h"
 #include "NodeTransformField.h"
 
 #include "scene/Scene.h"
@@ -80,8 +82,10 @@ public:
     void setNodeDynamic(int node, bool dynamic);
     void duplicateNode(int node);
     void deleteNode(int node);
-    void setMaterial(int index, const render::Material& material);
-    void setLight(int index, const LightNode& light);
+    /** `field` as for setNodeTransform: runs of edits of one field of a material merge (MaterialField). */
+    void setMaterial(int index, const render::Material& material, MaterialField field = MaterialField::Whole);
+    /** `field` as for setNodeTransform: runs of edits of one field of a light merge (LightField). */
+    void setLight(int index, const LightNode& light, LightField field = LightField::Whole);
     void addLight(const LightNode& light);
     void removeLight(int index);
     void setSettings(const render::RenderSettings& settings);
@@ -93,6 +97,15 @@ public:
      * the document's own camera is.
      */
     const render::Camera& savedCamera() const { return m_savedCamera; }
+
+    /**
+     * Ends the gesture the last edit belonged to (Enter or focus leaving a spin box, a colour dialog
+     * closing, a drag released): the next edit is an undo step of its own even when it changes the same
+     * field again. An undo ends it too, so an edit after an undo never merges into the step below.
+     */
+    void endEditGesture() { ++m_editGesture; }
+    /** The current gesture's number, for merging commands: only edits of one gesture merge. */
+    quint64 editGesture() const { return m_editGesture; }
 
     /** Current selection (a node index or -1); not part of undo. */
     int selectedNode() const { return m_selectedNode; }
@@ -138,6 +151,8 @@ private:
     QString m_filePath;
     render::Camera m_savedCamera;
     int m_selectedNode = -1;
+    quint64 m_editGesture = 0;
+    int m_undoIndex = 0; ///< The undo stack's index as last seen, to tell an undo from a push.
 };
 
 } // namespace vct::doc

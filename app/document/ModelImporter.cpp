@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -84,6 +85,54 @@ float floatOr(const aiMaterial* material, const char* key, unsigned type, unsign
 {
     float value = 0.0f;
     return material->Get(key, type, index, value) == AI_SUCCESS ? value : fallback;
+}
+
+/**
+ * Names nobody gave: Assimp's OBJ loader calls the geometry of a file without `o`/`g` lines "defaultobject",
+ * other loaders make up bracketed names such as "<STL_BINARY>", and many files leave names empty.
+ */
+bool isPlaceholderName(const QString& name)
+{
+    return name.isEmpty() || name == QLatin1String("defaultobject")
+        || (name.startsWith(QLatin1Char('<')) && name.endsWith(QLatin1Char('>')));
+}
+
+/**
+ * "node/mesh" without the made-up parts, and once when both parts say the same (an OBJ's `o floor` becomes
+ * node "floor" holding mesh "floor"). Empty when neither part is a real name: importModel() then names the
+ * mesh after the file.
+ */
+QString meshName(const QString& nodeName, const QString& ownName)
+{
+    const QString node = isPlaceholderName(nodeName) ? QString() : nodeName;
+    const QString own = isPlaceholderName(ownName) || ownName == node ? QString() : ownName;
+    if (node.isEmpty() || own.isEmpty())
+        return node.isEmpty() ? own : node;
+    return node + QLatin1Char('/') + own;
+}
+
+/**
+ * Names the unnamed meshes from index `first` on after the file: "bunny", then "bunny 2", ... when several
+ * would share it, skipping names the file itself gave in the same import.
+ */
+void nameAfterFile(render::Scene& scene, std::size_t first, const QString& baseName)
+{
+    const std::string stem = baseName.isEmpty() ? std::string("mesh") : baseName.toStdString();
+    std::set<std::string> taken;
+    for (std::size_t i = first; i < scene.meshes.size(); ++i)
+        taken.insert(scene.meshes[i].name);
+    int number = 1;
+    for (std::size_t i = first; i < scene.meshes.size(); ++i) {
+        if (!scene.meshes[i].name.empty())
+            continue;
+        std::string name;
+        do {
+            name = number == 1 ? stem : stem + ' ' + std::to_string(number);
+            ++number;
+        } while (taken.count(name) > 0);
+        taken.insert(name);
+        scene.meshes[i].name = name;
+    }
 }
 
 int storeTexture(ImportState& state, const QImage& decoded, const QString& name)
@@ -309,9 +358,7 @@ void appendMesh(ImportState& state, const aiMesh* source, const glm::mat4& trans
     for (std::uint32_t index : triangles)
         remap[index] = 0;
     render::Mesh mesh;
-    mesh.name = (nodeName.isEmpty() ? QString::fromUtf8(source->mName.C_Str())
-                                    : nodeName + QLatin1Char('/') + QString::fromUtf8(source->mName.C_Str()))
-                    .toStdString();
+    mesh.name = meshName(nodeName, QString::fromUtf8(source->mName.C_Str())).toStdString();
     const bool hasUvs = source->HasTextureCoords(0);
     for (unsigned v = 0; v < vertexCount; ++v) {
         if (remap[v] == ~0u)
@@ -438,6 +485,7 @@ bool ModelImporter::importModel(
     const size_t materialsBefore = scene.materials.size();
     const size_t texturesBefore = scene.textures.size();
     appendNode(state, ai->mRootNode, glm::mat4(1.0f));
+    nameAfterFile(scene, meshesBefore, info.completeBaseName());
 
     if (state.report.ignoredMeshes > 0)
         state.report.warnings << QStringLiteral("%1: %2 point or line meshes ignored")

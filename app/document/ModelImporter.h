@@ -22,6 +22,10 @@ namespace vct::doc {
  * - Only materials that a mesh uses are appended. Textures: the diffuse / base-colour map, decoded to
  * RGBA8888 rows top to bottom; uvs are flipped so that v = 0 is the top row (the first row of
  * TextureImage::rgba).
+ * - Mesh names: "node/mesh" from the file, said once when both are the same ("floor", not "floor/floor").
+ * Names the file did not give (empty, Assimp's "defaultobject" for an OBJ without groups, bracketed loader
+ * names) become the file's base name: "bunny", and "bunny 2", ... only when several meshes of one import
+ * would share it.
  * - Triangles with a non-finite vertex or zero area are dropped; missing, NaN or zero normals are recomputed
  * from the adjacent faces; vertices no triangle uses are removed.
  */

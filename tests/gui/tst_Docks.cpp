@@ -431,19 +431,28 @@ void TstDocks::lightDockRectAndDiskShowTheirSize()
     QVERIFY(intensity->suffix().contains(QStringLiteral("W/(m² sr)")));
     QCOMPARE(width->value(), 1.0);
 
-    // Edits of one light merge into one undo step (SetLightCommand::mergeWith): the switch to a rect too.
+    // Each field is its own undo step (SetLightCommand::mergeWith): the switch to a rect, the height, the
+    // rotation.
+    const auto current = [&] { return document->state().lights[std::size_t(light)]; };
     const int steps = document->undoStack()->count();
     height->setValue(0.25);
-    QCOMPARE(document->state().lights[std::size_t(light)].areaHeight, 0.25f);
+    QCOMPARE(current().areaHeight, 0.25f);
     rotation->setValue(45.0);
-    QCOMPARE(document->state().lights[std::size_t(light)].areaRotationDeg, 45.0f);
-    QCOMPARE(document->undoStack()->count(), steps);
+    QCOMPARE(current().areaRotationDeg, 45.0f);
+    QCOMPARE(document->undoStack()->count(), steps + 2);
     document->undoStack()->undo();
-    QCOMPARE(document->state().lights[std::size_t(light)].type, doc::LightType::Point);
-    QCOMPARE(document->state().lights[std::size_t(light)].areaHeight, 1.0f);
+    QCOMPARE(current().areaRotationDeg, 0.0f);
+    QCOMPARE(current().areaHeight, 0.25f);
+    QCOMPARE(rotation->value(), 0.0);
+    document->undoStack()->undo();
+    QCOMPARE(current().areaHeight, 1.0f);
+    QCOMPARE(current().type, doc::LightType::Rect);
+    document->undoStack()->undo();
+    QCOMPARE(current().type, doc::LightType::Point);
     QVERIFY(!width->isVisible() && !height->isVisible() && !rotation->isVisible());
     QVERIFY(intensity->suffix().contains(QStringLiteral("W/sr")));
-    document->undoStack()->redo();
+    for (int i = 0; i < 3; ++i)
+        document->undoStack()->redo();
     QVERIFY(height->isVisible());
     QCOMPARE(height->value(), 0.25);
     QCOMPARE(rotation->value(), 45.0);
@@ -452,10 +461,15 @@ void TstDocks::lightDockRectAndDiskShowTheirSize()
     type->setCurrentIndex(type->findData(int(doc::LightType::Disk)));
     QVERIFY(width->isVisible() && !height->isVisible() && !rotation->isVisible());
     width->setValue(0.5);
-    QCOMPARE(document->state().lights[std::size_t(light)].areaWidth, 0.5f);
+    QCOMPARE(current().areaWidth, 0.5f);
     QCOMPARE(document->buildRenderScene().surfaceLights.back().width, 0.5f);
+    QCOMPARE(document->undoStack()->text(document->undoStack()->index() - 1),
+        QStringLiteral("Light diameter of %1").arg(current().name));
     document->undoStack()->undo();
-    QCOMPARE(document->state().lights[std::size_t(light)].type, doc::LightType::Point);
+    QCOMPARE(current().areaWidth, 1.0f);
+    QCOMPARE(current().type, doc::LightType::Disk);
+    document->undoStack()->setIndex(steps - 1);
+    QCOMPARE(current().type, doc::LightType::Point);
     QVERIFY(document->buildRenderScene().surfaceLights.empty());
 
     // Added ones hang under the box's top, facing down, inside it.

@@ -15,11 +15,14 @@
 using vct::doc::ChangeEvent;
 using vct::doc::Document;
 using vct::doc::DocumentState;
+using vct::doc::LightField;
 using vct::doc::LightNode;
 using vct::doc::LightType;
+using vct::doc::MaterialField;
 using vct::doc::NodeTransform;
 using vct::doc::NodeTransformField;
 using vct::doc::sameDocument;
+using vct::doc::sameMaterial;
 
 namespace {
 
@@ -372,6 +375,222 @@ private slots:
         settings.voxelResolution = 64;
         doc.setSettings(settings);
         QCOMPARE(doc.undoStack()->count(), 4);
+    }
+
+    void materialFieldsAreSeparateSteps()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        QUndoStack* undo = doc.undoStack();
+        const vct::render::Material before = doc.state().materials[1];
+        const QString name = QString::fromStdString(before.name);
+        const auto material = [&] { return doc.state().materials[1]; };
+        vct::render::Material m = before;
+
+        // Albedo twice in one gesture (a colour dialog's live preview): one step.
+        for (float red : { 0.3f, 0.4f }) {
+            m.albedo.x = red;
+            doc.setMaterial(1, m, MaterialField::Albedo);
+        }
+        QCOMPARE(undo->count(), 1);
+        QCOMPARE(undo->text(0), QStringLiteral("Albedo of %1").arg(name));
+        // Then the shininess, twice: the next step, one for both.
+        m.specular = glm::vec3(0.1f);
+        doc.setMaterial(1, m, MaterialField::Specular);
+        for (float shininess : { 5.0f, 50.0f }) {
+            m.shininess = shininess;
+            doc.setMaterial(1, m, MaterialField::Shininess);
+        }
+        QCOMPARE(undo->count(), 3);
+        QCOMPARE(undo->text(1), QStringLiteral("Specular of %1").arg(name));
+        QCOMPARE(undo->text(2), QStringLiteral("Shininess of %1").arg(name));
+        // Emission colour and strength are two fields although both set the emission.
+        m.emission = glm::vec3(1.0f, 0.5f, 0.5f);
+        doc.setMaterial(1, m, MaterialField::EmissionColor);
+        m.emission = glm::vec3(4.0f, 2.0f, 2.0f);
+        doc.setMaterial(1, m, MaterialField::EmissionStrength);
+        QCOMPARE(undo->count(), 5);
+        QCOMPARE(undo->text(4), QStringLiteral("Emission strength of %1").arg(name));
+        // The albedo again, after other fields: a step of its own, not merged into the first.
+        m.albedo.y = 0.6f;
+        doc.setMaterial(1, m, MaterialField::Albedo);
+        QCOMPARE(undo->count(), 6);
+        const vct::render::Material edited = material();
+
+        // Each undo reverts exactly its own field.
+        undo->undo();
+        QCOMPARE(material().albedo, glm::vec3(0.4f, before.albedo.y, before.albedo.z));
+        QCOMPARE(material().emission, glm::vec3(4.0f, 2.0f, 2.0f));
+        undo->undo();
+        QCOMPARE(material().emission, glm::vec3(1.0f, 0.5f, 0.5f));
+        undo->undo();
+        QCOMPARE(material().emission, before.emission);
+        QCOMPARE(material().shininess, 50.0f);
+        undo->undo();
+        QCOMPARE(material().shininess, before.shininess);
+        QCOMPARE(material().specular, glm::vec3(0.1f));
+        undo->undo();
+        QCOMPARE(material().specular, before.specular);
+        QCOMPARE(material().albedo.x, 0.4f);
+        undo->undo();
+        QVERIFY(sameMaterial(material(), before));
+        undo->setIndex(undo->count());
+        QVERIFY(sameMaterial(material(), edited));
+    }
+
+    void materialMergesStopAtGesturesSwitchesAndUndo()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        QUndoStack* undo = doc.undoStack();
+        const vct::render::Material before = doc.state().materials[1];
+        vct::render::Material m = before;
+
+        // Enter or a closed dialog ends the gesture: the same field again is a new step.
+        m.shininess = 10.0f;
+        doc.setMaterial(1, m, MaterialField::Shininess);
+        doc.endEditGesture();
+        m.shininess = 20.0f;
+        doc.setMaterial(1, m, MaterialField::Shininess);
+        QCOMPARE(undo->count(), 2);
+        // The same field of another material is another step.
+        vct::render::Material other = doc.state().materials[2];
+        other.shininess = 30.0f;
+        doc.setMaterial(2, other, MaterialField::Shininess);
+        QCOMPARE(undo->count(), 3);
+        // Each click of a switch is a step: merged, the second would cancel the first and leave nothing.
+        m.doubleSided = !before.doubleSided;
+        doc.setMaterial(1, m, MaterialField::DoubleSided);
+        m.doubleSided = before.doubleSided;
+        doc.setMaterial(1, m, MaterialField::DoubleSided);
+        QCOMPARE(undo->count(), 5);
+        QVERIFY(undo->text(4).startsWith(QStringLiteral("Double-sided switch of ")));
+
+        // After an undo, an edit of the field below the undone step does not merge into that step.
+        undo->setIndex(2); // shininess 20, the other material untouched
+        m.shininess = 40.0f;
+        doc.setMaterial(1, m, MaterialField::Shininess);
+        QCOMPARE(undo->count(), 3);
+        undo->undo();
+        QCOMPARE(doc.state().materials[1].shininess, 20.0f);
+        undo->undo();
+        QCOMPARE(doc.state().materials[1].shininess, 10.0f);
+        undo->undo();
+        QVERIFY(sameMaterial(doc.state().materials[1], before));
+    }
+
+    void lightFieldsAreSeparateSteps()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        doc.addLight(LightNode {});
+        doc.undoStack()->clear();
+        QUndoStack* undo = doc.undoStack();
+        const int index = int(doc.state().lights.size()) - 1;
+        const LightNode before = doc.state().lights[std::size_t(index)];
+        const auto light = [&] { return doc.state().lights[std::size_t(index)]; };
+        LightNode l = before;
+
+        // Intensity typed digit by digit ("2", "25"): one step; then X: the next.
+        for (float intensity : { 2.0f, 25.0f }) {
+            l.intensity = intensity;
+            doc.setLight(index, l, LightField::Intensity);
+        }
+        QCOMPARE(undo->count(), 1);
+        QCOMPARE(undo->text(0), QStringLiteral("Light intensity of Point light 1"));
+        for (float x : { 0.5f, 0.75f }) {
+            l.position.x = x;
+            doc.setLight(index, l, LightField::PositionX);
+        }
+        QCOMPARE(undo->count(), 2);
+        QCOMPARE(undo->text(1), QStringLiteral("Light position X of Point light 1"));
+        // Another axis is another field.
+        l.position.y = 2.0f;
+        doc.setLight(index, l, LightField::PositionY);
+        // The colour, and a spot angle that carries the other along: one step each.
+        l.color = { 1.0f, 0.8f, 0.6f };
+        doc.setLight(index, l, LightField::Color);
+        l.spotInnerDeg = 60.0f;
+        l.spotOuterDeg = 60.0f;
+        doc.setLight(index, l, LightField::SpotInner);
+        QCOMPARE(undo->count(), 5);
+        QCOMPARE(undo->text(3), QStringLiteral("Light colour of Point light 1"));
+        const LightNode edited = light();
+
+        undo->undo();
+        QCOMPARE(light().spotInnerDeg, before.spotInnerDeg);
+        QCOMPARE(light().spotOuterDeg, before.spotOuterDeg);
+        undo->undo();
+        QCOMPARE(light().color, before.color);
+        undo->undo();
+        QCOMPARE(light().position, glm::vec3(0.75f, before.position.y, before.position.z));
+        // Undoing X leaves the intensity as typed.
+        undo->undo();
+        QCOMPARE(light().position, before.position);
+        QCOMPARE(light().intensity, 25.0f);
+        undo->undo();
+        QVERIFY(light() == before);
+        undo->setIndex(undo->count());
+        QVERIFY(light() == edited);
+    }
+
+    void lightMergesStopAtGesturesAndSingleShotFields()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        doc.addLight(LightNode {});
+        doc.undoStack()->clear();
+        QUndoStack* undo = doc.undoStack();
+        const int index = int(doc.state().lights.size()) - 1;
+        const LightNode before = doc.state().lights[std::size_t(index)];
+        LightNode l = before;
+
+        l.intensity = 2.0f;
+        doc.setLight(index, l, LightField::Intensity);
+        doc.endEditGesture();
+        l.intensity = 3.0f;
+        doc.setLight(index, l, LightField::Intensity);
+        QCOMPARE(undo->count(), 2);
+        // Renames, type changes and shadow switches never merge.
+        for (const QString& name : { QStringLiteral("Key"), QStringLiteral("Fill") }) {
+            l.name = name;
+            doc.setLight(index, l, LightField::Name);
+        }
+        QCOMPARE(undo->count(), 4);
+        QCOMPARE(undo->text(3), QStringLiteral("Rename light Key"));
+        for (bool shadows : { false, true }) {
+            l.castsShadows = shadows;
+            doc.setLight(index, l, LightField::Shadows);
+        }
+        QCOMPARE(undo->count(), 6);
+        // A rect names its fields as the panel does.
+        l.type = LightType::Rect;
+        doc.setLight(index, l, LightField::Type);
+        l.intensity = 9.0f;
+        doc.setLight(index, l, LightField::Intensity);
+        QCOMPARE(undo->text(7), QStringLiteral("Light radiance of Fill"));
+        undo->setIndex(0);
+        QVERIFY(doc.state().lights[std::size_t(index)] == before);
+    }
+
+    void gestureEndSplitsTransformDrags()
+    {
+        Document doc;
+        QVERIFY(openCornell(doc));
+        const NodeTransform before = doc.state().nodes[0].transform;
+        NodeTransform t = before;
+        for (float y : { 0.1f, 0.2f }) {
+            t.translation.y = y;
+            doc.setNodeTransform(0, t);
+        }
+        doc.endEditGesture(); // the mouse button released
+        t.translation.y = 0.3f;
+        doc.setNodeTransform(0, t);
+        QCOMPARE(doc.undoStack()->count(), 2);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.state().nodes[0].transform.translation.y, 0.2f);
+        doc.undoStack()->undo();
+        QVERIFY(doc.state().nodes[0].transform == before);
     }
 
     void hidingANodeRemovesItsMesh()

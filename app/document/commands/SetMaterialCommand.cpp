@@ -7,13 +7,49 @@
 
 namespace vct::doc {
 
-SetMaterialCommand::SetMaterialCommand(Document* document, int index, const render::Material& material)
+namespace {
+
+const char* textFor(MaterialField field)
+{
+    switch (field) {
+    case MaterialField::Albedo:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Albedo of %1");
+    case MaterialField::Emissive:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Emissive switch of %1");
+    case MaterialField::EmissionColor:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Emission colour of %1");
+    case MaterialField::EmissionStrength:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Emission strength of %1");
+    case MaterialField::Specular:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Specular of %1");
+    case MaterialField::Shininess:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Shininess of %1");
+    case MaterialField::DoubleSided:
+        return QT_TRANSLATE_NOOP("SetMaterialCommand", "Double-sided switch of %1");
+    case MaterialField::Whole:
+        break;
+    }
+    return QT_TRANSLATE_NOOP("SetMaterialCommand", "Edit material %1");
+}
+
+/** A switch's second click undoes its first: merged, the two would leave no step to undo at all. */
+bool isSwitch(MaterialField field)
+{
+    return field == MaterialField::Emissive || field == MaterialField::DoubleSided;
+}
+
+} // namespace
+
+SetMaterialCommand::SetMaterialCommand(
+    Document* document, int index, const render::Material& material, MaterialField field)
     : m_document(document)
     , m_index(index)
+    , m_field(field)
+    , m_gesture(document->editGesture())
     , m_before(document->state().materials.at(std::size_t(index)))
     , m_after(material)
 {
-    setText(QCoreApplication::translate("SetMaterialCommand", "Edit material %1")
+    setText(QCoreApplication::translate("SetMaterialCommand", textFor(field))
                 .arg(QString::fromStdString(m_before.name)));
 }
 
@@ -35,7 +71,8 @@ int SetMaterialCommand::id() const
 bool SetMaterialCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const SetMaterialCommand*>(other);
-    if (next->m_index != m_index)
+    if (next->m_index != m_index || next->m_field != m_field || next->m_gesture != m_gesture
+        || isSwitch(m_field))
         return false;
     m_after = next->m_after;
     setObsolete(sameMaterial(m_after, m_before));

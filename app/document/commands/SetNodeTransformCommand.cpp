@@ -37,6 +37,7 @@ SetNodeTransformCommand::SetNodeTransformCommand(
     : m_document(document)
     , m_nodeId(document->state().nodes.at(node).id)
     , m_field(field)
+    , m_gesture(document->editGesture())
     , m_before(document->state().nodes.at(node).transform)
     , m_after(transform)
 {
@@ -62,7 +63,7 @@ int SetNodeTransformCommand::id() const
 bool SetNodeTransformCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const SetNodeTransformCommand*>(other);
-    if (next->m_nodeId != m_nodeId || next->m_field != m_field)
+    if (next->m_nodeId != m_nodeId || next->m_field != m_field || next->m_gesture != m_gesture)
         return false;
     m_after = next->m_after;
     // A drag that ends where it started is no edit: the stack drops the command.

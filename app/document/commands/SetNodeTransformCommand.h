@@ -10,9 +10,10 @@ namespace vct::doc {
 class Document;
 
 /**
- * Moves, rotates or scales one node. Consecutive commands on the same node and field merge into one undo
- * step, so a drag or a spin box's steps are undone at once, while an edit of another field is a step of its
- * own. The node is found by id, so the command survives index shifts.
+ * Moves, rotates or scales one node. Consecutive commands on the same node and field within one gesture
+ * (Document::editGesture) merge into one undo step, so a drag or a spin box's steps are undone at once, while
+ * an edit of another field, or a second drag, is a step of its own. The node is found by id, so the command
+ * survives index shifts.
  */
 class SetNodeTransformCommand : public QUndoCommand {
 public:
@@ -30,6 +31,7 @@ private:
     Document* m_document;
     quint64 m_nodeId;
     NodeTransformField m_field;
+    quint64 m_gesture;
     NodeTransform m_before;
     NodeTransform m_after;
 };
