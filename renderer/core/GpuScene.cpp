@@ -47,18 +47,6 @@ std::vector<glm::vec3> fallbackNormals(const Mesh& mesh)
     return normals;
 }
 
-bool sameSurfaceLights(const std::vector<SurfaceLight>& a, const std::vector<SurfaceLight>& b)
-{
-    if (a.size() != b.size())
-        return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].shape != b[i].shape || a[i].centre != b[i].centre || a[i].direction != b[i].direction
-            || a[i].width != b[i].width || a[i].height != b[i].height || a[i].rotationDeg != b[i].rotationDeg
-            || a[i].radiance != b[i].radiance || a[i].castsShadows != b[i].castsShadows)
-            return false;
-    return true;
-}
-
 struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
@@ -331,7 +319,7 @@ void GpuScene::setLights(const std::vector<PointLight>& points,
 {
     m_scene.pointLights = points;
     m_scene.directionalLights = directionals;
-    if (!sameSurfaceLights(surfaces, m_scene.surfaceLights)) {
+    if (surfaces != m_scene.surfaceLights) {
         m_scene.surfaceLights = surfaces;
         rebuildAreaLights();
     }

@@ -196,10 +196,10 @@ glm::vec3 PathTracer::radiance(const CameraRays::Ray& ray, Pcg32& random, std::u
             result += throughput * reflected * light.intensity * light.spotFactor(-toLightUnit)
                 / distanceSquared;
         }
-        for (const DirectionalLight& light : m_directionalLights) {
+        for (std::size_t i = 0; i < m_directionalLights.size(); ++i) {
+            const DirectionalLight& light = m_directionalLights[i];
             const glm::vec3 toLight = light.angularDiameterDeg > 0.0f ? directionWithinCone(-light.direction,
-                                          m_sunCosHalf[std::size_t(&light - m_directionalLights.data())],
-                                          random.nextFloat(), random.nextFloat())
+                                          m_sunCosHalf[i], random.nextFloat(), random.nextFloat())
                                                                       : -light.direction;
             const glm::vec3 reflected = lightContribution(toLight);
             if (maxComponent(reflected) <= 0.0f)

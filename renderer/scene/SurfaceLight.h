@@ -28,6 +28,7 @@ struct SurfaceLight {
     glm::vec3 radiance { 1.0f }; ///< Emitted radiance, W/(m^2 sr), per channel, front face only.
     bool castsShadows = true;
 
+    bool operator==(const SurfaceLight& other) const = default;
     /**
      * World-space corners, three per triangle, counter-clockwise seen from the front. Empty when the light
      * cannot emit: a zero or non-finite direction, size or centre.

@@ -44,27 +44,6 @@ render::Scene lightOverFloor(bool blocker)
     return scene;
 }
 
-/**
- * Irradiance at floor point p from the light, by brute-force quadrature over the light's area:
- * E = L * integral of cos(theta_floor) cos(theta_light) / r^2 dA. Independent of the contour integral the
- * renderer evaluates.
- */
-double quadratureIrradiance(const glm::dvec3& p)
-{
-    constexpr int n = 600;
-    double sum = 0.0;
-    const double cell = 1.0 / n;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            const glm::dvec3 q(-0.5 + (i + 0.5) * cell, 1.0, -0.5 + (j + 0.5) * cell);
-            const glm::dvec3 d = q - p;
-            const double r2 = glm::dot(d, d);
-            const double cosFloor = d.y / std::sqrt(r2);
-            sum += cosFloor * cosFloor / r2 * cell * cell; // cos at the light equals cos at the floor here
-        }
-    return kRadiance * sum;
-}
-
 } // namespace
 
 /** Emitters as area lights: exact unshadowed irradiance, soft shadows close to the path tracer's. */
@@ -133,7 +112,8 @@ void AreaLightsTest::squareLightIrradianceIsExact()
             const double actual = image.at(pixel.x, pixel.y).r;
             // Where the pixel's centre ray meets the floor, not the nominal point.
             const glm::vec3 onFloor = test::floorPointOf(scene.camera, pixel, kSize);
-            const double expected = kAlbedo / glm::pi<double>() * quadratureIrradiance(glm::dvec3(onFloor));
+            const double expected = kAlbedo / glm::pi<double>()
+                * test::floorIrradianceFromOverheadLight(glm::dvec3(onFloor), 1.0, kRadiance);
             const double error = std::abs(actual - expected) / expected;
             qInfo("floor (%.2f, %.2f): %.5f, closed form %.5f (%.3f%%)", double(onFloor.x), double(onFloor.z),
                 actual, expected, 100.0 * error);
@@ -155,7 +135,8 @@ void AreaLightsTest::penumbraFollowsThePathTracer()
     render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize, settings);
     QVERIFY(reference.render(256));
     const render::RadianceImage truth = reference.image();
-    const double unshadowed = kAlbedo / glm::pi<double>() * quadratureIrradiance({ 0.0, 0.0, 0.0 });
+    const double unshadowed = kAlbedo / glm::pi<double>()
+        * test::floorIrradianceFromOverheadLight({ 0.0, 0.0, 0.0 }, 1.0, kRadiance);
     for (const auto& [divisor, bound] : { std::pair { 1, 0.10 }, std::pair { 2, 0.13 } }) {
         const render::RadianceImage image = renderDirect(scene, divisor);
         double worst = 0.0;

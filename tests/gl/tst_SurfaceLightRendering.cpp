@@ -52,29 +52,6 @@ render::SurfaceLight light(render::SurfaceLight::Shape shape)
     return l;
 }
 
-/**
- * Irradiance at floor point p from a horizontal light at kHeight facing down, by brute-force quadrature over
- * the square [-0.5, 0.5]^2, or over the disk of diameter 1 (cells whose centre lies inside it): independent
- * of the contour integral the renderer evaluates.
- */
-double quadratureIrradiance(const glm::dvec3& p, bool disk)
-{
-    constexpr int n = 600;
-    double sum = 0.0;
-    const double cell = 1.0 / n;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            const glm::dvec3 q(-0.5 + (i + 0.5) * cell, kHeight, -0.5 + (j + 0.5) * cell);
-            if (disk && q.x * q.x + q.z * q.z > 0.25)
-                continue;
-            const glm::dvec3 d = q - p;
-            const double r2 = glm::dot(d, d);
-            const double cosFloor = d.y / std::sqrt(r2);
-            sum += cosFloor * cosFloor / r2 * cell * cell; // cos at the light equals cos at the floor here
-        }
-    return kRadiance * sum;
-}
-
 } // namespace
 
 /**
@@ -177,8 +154,8 @@ void SurfaceLightRenderingTest::irradianceIsExact()
         for (const float z : { -1.0f, 0.0f, 1.0f }) {
             const glm::ivec2 pixel = test::pixelOf(scene.camera, { x, 0.0f, z }, kSize);
             const glm::vec3 onFloor = test::floorPointOf(scene.camera, pixel, kSize);
-            const double expected
-                = kAlbedo / glm::pi<double>() * quadratureIrradiance(glm::dvec3(onFloor), disk);
+            const double expected = kAlbedo / glm::pi<double>()
+                * test::floorIrradianceFromOverheadLight(glm::dvec3(onFloor), kHeight, kRadiance, disk);
             const double actual = image.at(pixel.x, pixel.y).r;
             worst = std::max(worst, std::abs(actual - expected) / expected);
         }
@@ -208,7 +185,8 @@ void SurfaceLightRenderingTest::shadowFollowsThePathTracer()
     render::ReferenceRenderer reference(scene, scene.camera, kSize, kSize, settings);
     QVERIFY(reference.render(256));
     const render::RadianceImage truth = reference.image();
-    const double unshadowed = kAlbedo / glm::pi<double>() * quadratureIrradiance({ 0.0, 0.0, 0.0 }, false);
+    const double unshadowed = kAlbedo / glm::pi<double>()
+        * test::floorIrradianceFromOverheadLight({ 0.0, 0.0, 0.0 }, kHeight, kRadiance);
     double worst = 0.0;
     for (int i = 0; i <= 24; ++i) {
         const float x = -1.2f + 0.1f * float(i);
@@ -232,7 +210,8 @@ void SurfaceLightRenderingTest::lightWithoutShadowsLightsThroughTheBlocker()
     const render::RadianceImage image = render(scene, render::DebugView::Direct);
     const glm::ivec2 under = test::pixelOf(scene.camera, { 0.0f, 0.0f, 0.0f }, kSize);
     const double expected = kAlbedo / glm::pi<double>()
-        * quadratureIrradiance(glm::dvec3(test::floorPointOf(scene.camera, under, kSize)), false);
+        * test::floorIrradianceFromOverheadLight(
+            glm::dvec3(test::floorPointOf(scene.camera, under, kSize)), kHeight, kRadiance);
     const double actual = image.at(under.x, under.y).r;
     QVERIFY2(std::abs(actual / expected - 1.0) <= 0.01, qPrintable(QString::number(actual / expected)));
 }

@@ -22,15 +22,10 @@ using namespace vct;
 
 namespace {
 
-QString describe(const glm::vec3& v)
-{
-    return QStringLiteral("(%1, %2, %3)").arg(double(v.x)).arg(double(v.y)).arg(double(v.z));
-}
-
 QString describe(const render::Camera& camera)
 {
     return QStringLiteral("position %1 look-at %2 up %3")
-        .arg(describe(camera.position), describe(camera.lookAt), describe(camera.up));
+        .arg(test::describe(camera.position), test::describe(camera.lookAt), test::describe(camera.up));
 }
 
 } // namespace
@@ -164,16 +159,8 @@ void CameraTest::initTestCase()
         doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), scene, &error), qPrintable(error));
     m_sceneCamera = scene.camera;
 
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->openInitial(QStringLiteral("builtin:cornell_point"));
-    render::RenderSettings settings = m_window->document()->state().settings;
-    settings.voxelResolution = 32; // small and quick on llvmpipe
-    m_window->document()->setSettings(settings);
-    m_window->document()->undoStack()->clear();
-    // The editor's own first size (MainWindow), as tst_Editor: the docks leave the viewport its real shape.
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window = test::showEditor(QStringLiteral("builtin:cornell_point"));
+    QVERIFY(m_window);
     QVERIFY2(waitForFrame(), "the viewport rendered no frame");
     QVERIFY2(m_window->viewport()->lastError().isEmpty(), qPrintable(m_window->viewport()->lastError()));
     QVERIFY(doc::sameCamera(camera(), m_sceneCamera));
@@ -217,7 +204,7 @@ void CameraTest::orbitKeepsThePointUnderTheCursorInPlace()
     const double moved = QLineF(now, pressed).length();
     QVERIFY2(moved <= 2.0,
         qPrintable(QStringLiteral("the picked point %1 moved %2 px on screen, from (%3, %4) to (%5, %6)")
-                       .arg(describe(hit.point))
+                       .arg(test::describe(hit.point))
                        .arg(moved)
                        .arg(pressed.x())
                        .arg(pressed.y())

@@ -73,17 +73,8 @@ double EditorTest::meanRadiance()
 
 void EditorTest::initTestCase()
 {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->openInitial(QStringLiteral("builtin:cornell_point"));
-    render::RenderSettings settings = m_window->document()->state().settings;
-    settings.voxelResolution = 32; // small and quick on llvmpipe
-    m_window->document()->setSettings(settings);
-    m_window->document()->undoStack()->clear();
-    // The editor's own first size (MainWindow): at 960 wide the docks left the viewport a 250-pixel strip,
-    // and one more row in a dock decided whether the short box's centre was still in it.
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window = test::showEditor(QStringLiteral("builtin:cornell_point"));
+    QVERIFY(m_window);
     QVERIFY2(waitForFrame(), "the viewport rendered no frame");
     QVERIFY2(m_window->viewport()->lastError().isEmpty(), qPrintable(m_window->viewport()->lastError()));
 }

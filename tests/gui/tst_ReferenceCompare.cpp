@@ -61,15 +61,8 @@ private:
 
 void ReferenceCompareTest::initTestCase()
 {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->openInitial(QStringLiteral("builtin:cornell"));
-    render::RenderSettings settings = m_window->document()->state().settings;
-    settings.voxelResolution = 32; // small and quick on llvmpipe
-    m_window->document()->setSettings(settings);
-    m_window->document()->undoStack()->clear();
-    m_window->resize(960, 640);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window = test::showEditor(QStringLiteral("builtin:cornell"), QSize(960, 640));
+    QVERIFY(m_window);
     QSignalSpy frames(m_window->viewport(), &ui::ViewportWidget::frameRendered);
     m_window->viewport()->update();
     QVERIFY2(frames.wait(20000), "the viewport rendered no frame");

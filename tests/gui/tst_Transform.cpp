@@ -1,4 +1,5 @@
 #include "EditorTestSetup.h"
+#include "TestSupport.h"
 #include "ui/MainWindow.h"
 #include "ui/MaterialDock.h"
 #include "ui/RenderSettingsDock.h"
@@ -43,15 +44,10 @@ std::string voxelizing(const render::FrameStats& stats)
     return "no voxelize pass";
 }
 
-QString describe(const glm::vec3& v)
-{
-    return QStringLiteral("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
-}
-
 QString describe(const doc::NodeTransform& t)
 {
     return QStringLiteral("translation %1 rotation %2 scale %3")
-        .arg(describe(t.translation), describe(t.rotationDeg), describe(t.scale));
+        .arg(test::describe(t.translation), test::describe(t.rotationDeg), test::describe(t.scale));
 }
 
 } // namespace
@@ -110,15 +106,8 @@ int TransformTest::shortBox() const
 void TransformTest::initTestCase()
 {
     qRegisterMetaType<render::FrameStats>();
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->openInitial(QStringLiteral("builtin:cornell_point"));
-    render::RenderSettings settings = m_window->document()->state().settings;
-    settings.voxelResolution = 32; // small and quick on llvmpipe
-    m_window->document()->setSettings(settings);
-    m_window->document()->undoStack()->clear();
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window = test::showEditor(QStringLiteral("builtin:cornell_point"));
+    QVERIFY(m_window);
     QVERIFY2(!nextFrame().passes.empty(), "the viewport rendered no frame");
     QVERIFY2(m_window->viewport()->lastError().isEmpty(), qPrintable(m_window->viewport()->lastError()));
     QVERIFY(shortBox() >= 0);
@@ -349,7 +338,7 @@ void TransformTest::valuesStayInRange()
     spin("uniformScale")->setValue(std::numeric_limits<double>::quiet_NaN());
     const glm::vec3 scale = transform().scale;
     for (int i = 0; i < 3; ++i)
-        QVERIFY2(std::isfinite(scale[i]) && scale[i] > 0.0f, qPrintable(describe(scale)));
+        QVERIFY2(std::isfinite(scale[i]) && scale[i] > 0.0f, qPrintable(test::describe(scale)));
 
     undo->setIndex(steps);
     QVERIFY(transform() == original);

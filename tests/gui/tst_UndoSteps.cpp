@@ -91,15 +91,8 @@ int UndoStepsTest::addPointLight()
 
 void UndoStepsTest::initTestCase()
 {
-    m_window = std::make_unique<ui::MainWindow>();
-    m_window->openInitial(QStringLiteral("builtin:cornell"));
-    render::RenderSettings settings = document()->state().settings;
-    settings.voxelResolution = 32; // small and quick on llvmpipe
-    document()->setSettings(settings);
-    undoStack()->clear();
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window = test::showEditor(QStringLiteral("builtin:cornell"));
+    QVERIFY(m_window);
     m_window->activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
     // The Material panel shares its place with the Transform and Render settings tabs.

@@ -1,8 +1,16 @@
 #pragma once
 
+#include "document/Document.h"
+#include "ui/MainWindow.h"
+
+#include <QSize>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QTest>
+#include <QUndoStack>
 #include <QtGlobal>
+
+#include <memory>
 
 namespace vct::test {
 
@@ -20,6 +28,26 @@ inline void prepareEditorApplication()
     QSurfaceFormat::setDefaultFormat(format);
     qputenv("VCT_NO_DIALOGS", "1");
     QStandardPaths::setTestModeEnabled(true);
+}
+
+/**
+ * The editor's window on `scene` with a 32³ grid (small and quick on llvmpipe) and no undo history yet, shown
+ * at `size` (the editor's own first size by default: at 960 wide the docks left the viewport a 250-pixel
+ * strip) and exposed; null when it never appears.
+ */
+inline std::unique_ptr<ui::MainWindow> showEditor(const QString& scene, QSize size = QSize(1280, 800))
+{
+    auto window = std::make_unique<ui::MainWindow>();
+    window->openInitial(scene);
+    render::RenderSettings settings = window->document()->state().settings;
+    settings.voxelResolution = 32;
+    window->document()->setSettings(settings);
+    window->document()->undoStack()->clear();
+    window->resize(size);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        return nullptr;
+    return window;
 }
 
 } // namespace vct::test

@@ -102,6 +102,24 @@ glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size)
     return camera.position + dir * (-camera.position.y / dir.y);
 }
 
+double floorIrradianceFromOverheadLight(const glm::dvec3& p, double height, double radiance, bool disk)
+{
+    constexpr int n = 600;
+    double sum = 0.0;
+    const double cell = 1.0 / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const glm::dvec3 q(-0.5 + (i + 0.5) * cell, height, -0.5 + (j + 0.5) * cell);
+            if (disk && q.x * q.x + q.z * q.z > 0.25)
+                continue;
+            const glm::dvec3 d = q - p;
+            const double r2 = glm::dot(d, d);
+            const double cosFloor = d.y / std::sqrt(r2);
+            sum += cosFloor * cosFloor / r2 * cell * cell; // cos at the light equals cos at the floor here
+        }
+    return radiance * sum;
+}
+
 double meanAround(const render::RadianceImage& image, glm::ivec2 pixel)
 {
     double sum = 0.0;
@@ -117,6 +135,11 @@ double meanRed(const render::RadianceImage& image)
     for (const glm::vec3& p : image.pixels)
         sum += p.r;
     return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
+}
+
+QString describe(const glm::vec3& v)
+{
+    return QStringLiteral("(%1, %2, %3)").arg(double(v.x)).arg(double(v.y)).arg(double(v.z));
 }
 
 QString writeFile(const QString& path, const QByteArray& bytes)

@@ -29,11 +29,21 @@ render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size);
 /** Where the ray through the centre of @p pixel (of a size x size image) meets the plane y = 0. */
 glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size);
+/**
+ * Irradiance (W/m^2) at floor point @p p from a light of @p radiance (W/(m^2 sr)) facing straight down at
+ * @p height, 1 m across and centred over the origin: the square [-0.5, 0.5]^2, or with @p disk the disk of
+ * diameter 1 (cells whose centre lies inside it). Brute-force quadrature of E = L * integral of cos cos / r^2
+ * dA, independent of the contour integral the renderer evaluates.
+ */
+double floorIrradianceFromOverheadLight(
+    const glm::dvec3& p, double height, double radiance, bool disk = false);
 /** The red channel's mean over the 3 x 3 pixels around @p pixel: a path tracer's noise, not its edges,
  * decides. */
 double meanAround(const render::RadianceImage& image, glm::ivec2 pixel);
 /** The red channel's mean over the whole image. */
 double meanRed(const render::RadianceImage& image);
+/** "(x, y, z)", for test messages. */
+QString describe(const glm::vec3& v);
 /** Writes @p bytes to @p path (creating its folder) and returns the path; a test cannot go on if it fails. */
 QString writeFile(const QString& path, const QByteArray& bytes);
 
