@@ -63,6 +63,11 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
     render::ReferenceStats stats;
     try {
         render::ReferenceRenderer renderer(scene, camera, width, height, request.settings);
+        if (renderer.droppedTriangles() > 0)
+            std::fprintf(stderr,
+                "vct-render: warning: %zu triangles left out of the path tracer's scene: zero area or "
+                "non-finite once placed in the world\n",
+                renderer.droppedTriangles());
         TerminalProgress progress("vct-render: reference");
         const bool done
             = renderer.render(request.samplesPerPixel, [&](double fraction) { progress(fraction); });
@@ -238,6 +243,10 @@ int RenderCommand::run(int argc, char** argv)
     // A project brings its own settings and camera; --set and --camera still override them.
     if (!loadSceneInput(sceneSpec, scene, settings, info, &error, unitScale, parser.value(sceneRootOption)))
         return fail(1, error);
+    if (scene.origin != glm::dvec3(0.0))
+        std::printf(
+            "%s lies far from the world's origin: rendered about a local origin at (%.3f, %.3f, %.3f) m\n",
+            qPrintable(sceneSpec), scene.origin.x, scene.origin.y, scene.origin.z);
     QStringList assignments = parser.values(setOption);
     if (parser.isSet(voxelOption))
         assignments.prepend(QStringLiteral("voxel_res=") + parser.value(voxelOption));

@@ -42,7 +42,7 @@ bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSet
         settings = project.state().settings;
         return true;
     }
-    return doc::SceneLoader::load(spec, scene, error, &info, unitScale);
+    return doc::SceneLoader::load(spec, scene, error, &info, unitScale, doc::SceneLoader::Origin::RebaseFar);
 }
 
 QString applySettingAssignments(const QStringList& assignments, render::RenderSettings& settings)
@@ -69,7 +69,7 @@ bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, cons
         lit.pointLights.clear();
         lit.directionalLights.clear();
         lit.surfaceLights.clear();
-        if (!doc::LightsFile::read(lightsPath, lit, error))
+        if (!doc::LightsFile::read(lightsPath, lit, error, scene.origin))
             return false;
         scene = std::move(lit);
     }
@@ -78,7 +78,7 @@ bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, cons
     view.camera = scene.camera;
     if (!cameraPath.isEmpty()) {
         doc::CameraSetup setup;
-        if (!doc::CameraFile::read(cameraPath, setup, error))
+        if (!doc::CameraFile::read(cameraPath, setup, error, scene.origin))
             return false;
         view.camera = setup.camera;
         view.camera.nearPlane = doc::SceneLoader::nearPlaneFor(scene.bounds());

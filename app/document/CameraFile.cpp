@@ -23,16 +23,17 @@ constexpr int kMaxImageSide = 1 << 15;
 
 } // namespace
 
-bool CameraFile::read(const QString& path, CameraSetup& setup, QString* error)
+bool CameraFile::read(const QString& path, CameraSetup& setup, QString* error, const glm::dvec3& origin)
 {
     JsonFieldReader reader(path);
+    reader.setOrigin(origin);
     QJsonObject root;
     CameraSetup result = setup;
     double fov = 0.0;
     bool ok = reader.readFile(path, &root)
-        && reader.readVec3(
+        && reader.readPoint(
             root, QStringLiteral("position"), QStringLiteral("position"), &result.camera.position)
-        && reader.readVec3(root, QStringLiteral("look_at"), QStringLiteral("look_at"), &result.camera.lookAt)
+        && reader.readPoint(root, QStringLiteral("look_at"), QStringLiteral("look_at"), &result.camera.lookAt)
         && (!root.contains(QStringLiteral("up"))
             || reader.readVec3(root, QStringLiteral("up"), QStringLiteral("up"), &result.camera.up))
         && reader.readNumber(root, QStringLiteral("fov_y_deg"), QStringLiteral("fov_y_deg"), &fov)

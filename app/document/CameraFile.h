@@ -2,6 +2,8 @@
 
 #include "CameraSetup.h"
 
+#include <glm/ext/vector_double3.hpp>
+
 #include <QString>
 
 namespace vct::doc {
@@ -13,9 +15,12 @@ namespace vct::doc {
  */
 class CameraFile {
 public:
-    /** Reads `path` into `setup`; on failure returns false, leaves `setup` alone and names file and field in
-     * `error`. */
-    static bool read(const QString& path, CameraSetup& setup, QString* error);
+    /**
+     * Reads `path` into `setup`; on failure returns false, leaves `setup` alone and names file and field in
+     * `error`. Position and look-at are read less `origin`, in double precision (SceneRebase).
+     */
+    static bool read(
+        const QString& path, CameraSetup& setup, QString* error, const glm::dvec3& origin = glm::dvec3(0.0));
     /** Writes `setup` as indented JSON; false with a message on I/O failure. */
     static bool write(const QString& path, const CameraSetup& setup, QString* error);
 };

@@ -111,8 +111,8 @@ bool JsonFieldReader::readString(
     return true;
 }
 
-bool JsonFieldReader::readVec3(
-    const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
+bool JsonFieldReader::readDoubles(
+    const QJsonObject& object, const QString& key, const QString& fieldPath, glm::dvec3* value)
 {
     const QJsonValue v = object.value(key);
     const QJsonArray array = v.toArray();
@@ -120,13 +120,35 @@ bool JsonFieldReader::readVec3(
         return fail(fieldPath,
             QStringLiteral("expected an array of 3 numbers, found %1")
                 .arg(v.isArray() ? QStringLiteral("%1 elements").arg(array.size()) : typeName(v)));
-    glm::vec3 result(0.0f);
     for (int i = 0; i < 3; ++i) {
         if (!array[i].isDouble() || !std::isfinite(array[i].toDouble()))
             return fail(fieldPath, QStringLiteral("element %1 is not a finite number").arg(i));
-        result[i] = float(array[i].toDouble());
+        (*value)[i] = array[i].toDouble();
     }
-    *value = result;
+    return true;
+}
+
+bool JsonFieldReader::readVec3(
+    const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
+{
+    glm::dvec3 result(0.0);
+    if (!readDoubles(object, key, fieldPath, &result))
+        return false;
+    *value = glm::vec3(result);
+    return true;
+}
+
+bool JsonFieldReader::readPoint(
+    const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value)
+{
+    glm::dvec3 result(0.0);
+    if (!readDoubles(object, key, fieldPath, &result))
+        return false;
+    const glm::vec3 local(result - m_origin);
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(local[i]))
+            return fail(fieldPath, QStringLiteral("element %1 is too large").arg(i));
+    *value = local;
     return true;
 }
 

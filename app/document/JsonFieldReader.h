@@ -1,5 +1,6 @@
 #pragma once
 
+#include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
 #include <QJsonObject>
@@ -31,14 +32,26 @@ public:
     bool readString(const QJsonObject& object, const QString& key, const QString& fieldPath, QString* value);
     /** An array of exactly three finite numbers. */
     bool readVec3(const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value);
+    /**
+     * A point: three finite numbers, less the origin (setOrigin), subtracted in double precision before the
+     * result becomes float, and finite as floats. A scene far from the world's origin is read this way so
+     * that its lights and camera keep the precision its geometry has once it is rebased (SceneRebase).
+     */
+    bool readPoint(const QJsonObject& object, const QString& key, const QString& fieldPath, glm::vec3* value);
+    /** The world position that readPoint subtracts; zero unless set. */
+    void setOrigin(const glm::dvec3& origin) { m_origin = origin; }
 
     /** Records an error about `fieldPath` (or the whole file if empty); always returns false. */
     bool fail(const QString& fieldPath, const QString& problem);
     const QString& error() const { return m_error; }
 
 private:
+    bool readDoubles(
+        const QJsonObject& object, const QString& key, const QString& fieldPath, glm::dvec3* value);
+
     QString m_fileName;
     QString m_error;
+    glm::dvec3 m_origin { 0.0 };
 };
 
 } // namespace vct::doc

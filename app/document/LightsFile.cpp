@@ -77,8 +77,8 @@ bool readSurfaceLight(JsonFieldReader& reader, const QJsonObject& light, const Q
     render::SurfaceLight* surface)
 {
     surface->shape = rect ? render::SurfaceLight::Shape::Rectangle : render::SurfaceLight::Shape::Disk;
-    if (!readFiniteVec3(
-            reader, light, QStringLiteral("position"), prefix + QStringLiteral(".position"), &surface->centre)
+    if (!reader.readPoint(
+            light, QStringLiteral("position"), prefix + QStringLiteral(".position"), &surface->centre)
         || !readFiniteVec3(reader, light, QStringLiteral("direction"), prefix + QStringLiteral(".direction"),
             &surface->direction))
         return false;
@@ -125,9 +125,10 @@ bool readSurfaceLight(JsonFieldReader& reader, const QJsonObject& light, const Q
 
 } // namespace
 
-bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
+bool LightsFile::read(const QString& path, render::Scene& scene, QString* error, const glm::dvec3& origin)
 {
     JsonFieldReader reader(path);
+    reader.setOrigin(origin);
     auto failed = [&]() {
         if (error)
             *error = reader.error();
@@ -170,7 +171,7 @@ bool LightsFile::read(const QString& path, render::Scene& scene, QString* error)
         if (type == QLatin1String("point") || type == QLatin1String("spot")) {
             render::PointLight point;
             point.castsShadows = castsShadows;
-            if (!reader.readVec3(
+            if (!reader.readPoint(
                     light, QStringLiteral("position"), prefix + QStringLiteral(".position"), &point.position)
                 || !reader.readVec3(light, QStringLiteral("intensity"), prefix + QStringLiteral(".intensity"),
                     &point.intensity))

@@ -2,6 +2,8 @@
 
 #include "scene/Scene.h"
 
+#include <glm/ext/vector_double3.hpp>
+
 #include <QString>
 
 namespace vct::doc {
@@ -32,9 +34,11 @@ class LightsFile {
 public:
     /**
      * Appends the file's lights to `scene`. On failure returns false, appends nothing and names the file and
-     * the field (e.g. "lights[1].type") in `error`.
+     * the field (e.g. "lights[1].type") in `error`. Positions are read less `origin`, in double precision,
+     * for a scene rebased to a local origin (SceneRebase).
      */
-    static bool read(const QString& path, render::Scene& scene, QString* error);
+    static bool read(const QString& path, render::Scene& scene, QString* error,
+        const glm::dvec3& origin = glm::dvec3(0.0));
 };
 
 } // namespace vct::doc

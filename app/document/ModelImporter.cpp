@@ -318,15 +318,19 @@ void appendMesh(ImportState& state, const aiMesh* source, const glm::mat4& trans
     const unsigned vertexCount = source->mNumVertices;
     std::vector<std::uint32_t> triangles;
     triangles.reserve(size_t(source->mNumFaces) * 3);
-    int dropped = 0;
+    ImportReport& report = state.report;
     for (unsigned f = 0; f < source->mNumFaces; ++f) {
         const aiFace& face = source->mFaces[f];
         if (face.mNumIndices != 3)
             continue; // Points and lines that SortByPType left in a mixed mesh.
         const unsigned a = face.mIndices[0], b = face.mIndices[1], c = face.mIndices[2];
-        if (a >= vertexCount || b >= vertexCount || c >= vertexCount || !isFinite(source->mVertices[a])
-            || !isFinite(source->mVertices[b]) || !isFinite(source->mVertices[c])) {
-            ++dropped;
+        if (a >= vertexCount || b >= vertexCount || c >= vertexCount) {
+            ++report.badIndexTriangles;
+            continue;
+        }
+        if (!isFinite(source->mVertices[a]) || !isFinite(source->mVertices[b])
+            || !isFinite(source->mVertices[c])) {
+            ++report.nonFiniteTriangles;
             continue;
         }
         const glm::vec3 e1 = toGlm(source->mVertices[b]) - toGlm(source->mVertices[a]);
@@ -335,12 +339,12 @@ void appendMesh(ImportState& state, const aiMesh* source, const glm::mat4& trans
         const float longest = std::max({ glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3) });
         const float doubledArea = glm::length(glm::cross(e1, e2));
         if (!(doubledArea > kDegenerateRatio * longest)) {
-            ++dropped;
+            ++report.zeroAreaTriangles;
             continue;
         }
         triangles.insert(triangles.end(), { a, b, c });
     }
-    state.report.droppedTriangles += dropped;
+    report.droppedTriangles = report.nonFiniteTriangles + report.badIndexTriangles + report.zeroAreaTriangles;
     if (triangles.empty())
         return;
 
@@ -415,6 +419,9 @@ void mergeReport(const ImportReport& from, ImportReport* into)
     into->meshes += from.meshes;
     into->triangles += from.triangles;
     into->droppedTriangles += from.droppedTriangles;
+    into->nonFiniteTriangles += from.nonFiniteTriangles;
+    into->badIndexTriangles += from.badIndexTriangles;
+    into->zeroAreaTriangles += from.zeroAreaTriangles;
     into->repairedNormals += from.repairedNormals;
     into->clampedMaterials += from.clampedMaterials;
     into->ignoredMeshes += from.ignoredMeshes;
@@ -491,10 +498,19 @@ bool ModelImporter::importModel(
         state.report.warnings << QStringLiteral("%1: %2 point or line meshes ignored")
                                      .arg(path)
                                      .arg(state.report.ignoredMeshes);
-    if (state.report.droppedTriangles > 0)
-        state.report.warnings << QStringLiteral("%1: %2 triangles dropped (non-finite vertices or zero area)")
+    if (state.report.droppedTriangles > 0) {
+        QStringList reasons;
+        for (const auto& [count, reason] :
+            { std::pair { state.report.nonFiniteTriangles, "a non-finite vertex" },
+                std::pair { state.report.badIndexTriangles, "a vertex index out of range" },
+                std::pair { state.report.zeroAreaTriangles, "zero area" } })
+            if (count > 0)
+                reasons << QStringLiteral("%1 for %2").arg(count).arg(QLatin1String(reason));
+        state.report.warnings << QStringLiteral("%1: %2 triangles dropped: %3")
                                      .arg(path)
-                                     .arg(state.report.droppedTriangles);
+                                     .arg(state.report.droppedTriangles)
+                                     .arg(reasons.join(QStringLiteral(", ")));
+    }
     if (state.report.repairedNormals > 0)
         state.report.warnings << QStringLiteral("%1: %2 missing or invalid normals recomputed")
                                      .arg(path)

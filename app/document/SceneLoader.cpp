@@ -4,6 +4,7 @@
 #include "CameraFile.h"
 #include "LightsFile.h"
 #include "ModelImporter.h"
+#include "SceneRebase.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -44,8 +45,8 @@ bool staysFinite(const render::Scene& scaled)
 
 } // namespace
 
-bool SceneLoader::load(
-    const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info, float unitScale)
+bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info,
+    float unitScale, Origin origin)
 {
     SceneLoadInfo localInfo;
     render::Scene result;
@@ -74,19 +75,23 @@ bool SceneLoader::load(
         if (!ModelImporter::importModel(spec, result, error, &localInfo.report))
             return false;
         localInfo.files << spec;
+        // In the model's units: the siblings are in them too.
+        const glm::dvec3 localOrigin
+            = origin == Origin::RebaseFar ? SceneRebase::originFor(result) : glm::dvec3(0.0);
+        SceneRebase::rebase(result, localOrigin);
 
         const QFileInfo model(spec);
         const QString stem = model.dir().filePath(model.completeBaseName());
         const QString lightsPath = stem + QStringLiteral(".lights.json");
         if (QFileInfo::exists(lightsPath)) {
-            if (!LightsFile::read(lightsPath, result, error))
+            if (!LightsFile::read(lightsPath, result, error, localOrigin))
                 return false;
             localInfo.files << lightsPath;
         }
         const QString cameraPath = stem + QStringLiteral(".camera.json");
         if (QFileInfo::exists(cameraPath)) {
             CameraSetup setup;
-            if (!CameraFile::read(cameraPath, setup, error))
+            if (!CameraFile::read(cameraPath, setup, error, localOrigin))
                 return false;
             result.camera = setup.camera;
             result.camera.nearPlane = nearPlaneFor(result.bounds());
@@ -131,6 +136,7 @@ render::Scene SceneLoader::scaledScene(render::Scene scene, float unitScale)
     scene.camera.lookAt *= s;
     // Both ways a loaded camera gets its near plane (nearPlaneFor, frameBounds) are proportional to the size.
     scene.camera.nearPlane *= s;
+    scene.origin *= double(s);
     return scene;
 }
 

@@ -24,18 +24,26 @@ class SceneLoader {
 public:
     static constexpr float kFramingFovYDeg = 40.0f;
 
+    /** Whether a model far from the world's origin is moved to a local one (SceneRebase). */
+    enum class Origin {
+        Keep, ///< Coordinates as the files give them: a document whose sources must share one frame.
+        RebaseFar, ///< Rebased when far off, scene.origin saying where: a scene rendered on its own.
+    };
+
     /**
      * Replaces `scene` with the scene `spec` names. On failure returns false, leaves `scene` unchanged and
      * names the file and the problem in `error`. `info`, if given, receives the import report and the camera
      * file's image size. `unitScale` is metres per unit of a model file; a built-in scene takes only 1.
+     * With Origin::RebaseFar a model file far from the origin is rebased before its camera and lights files
+     * are read, and they are read less the origin in double precision.
      */
     static bool load(const QString& spec, render::Scene& scene, QString* error, SceneLoadInfo* info = nullptr,
-        float unitScale = 1.0f);
+        float unitScale = 1.0f, Origin origin = Origin::Keep);
 
     /**
      * `scene`, in units of `unitScale` metres, in metres: mesh transforms, light positions, light sizes and
-     * the camera (its near plane too) scaled about the origin. Directions, angles, intensities and radiances
-     * are physical quantities that do not depend on the unit, so they stay.
+     * the camera (its near plane too) and scene.origin scaled about the origin. Directions, angles,
+     * intensities and radiances are physical quantities that do not depend on the unit, so they stay.
      */
     static render::Scene scaledScene(render::Scene scene, float unitScale);
     /** Empty when `unitScale` can scale a model (finite and positive), else the problem. */

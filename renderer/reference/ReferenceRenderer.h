@@ -48,6 +48,8 @@ public:
     RadianceImage image() const;
     int samplesPerPixel() const { return m_samplesPerPixel; }
     const ReferenceStats& stats() const { return m_stats; }
+    /** Triangles the path tracer could not use: zero area or non-finite once transformed to world space. */
+    std::size_t droppedTriangles() const { return m_tracer.geometry().droppedTriangles(); }
     const ReferenceSettings& settings() const { return m_settings; }
     int width() const { return m_width; }
     int height() const { return m_height; }

@@ -9,6 +9,8 @@
 #include "scene/SurfaceLight.h"
 #include "scene/TextureImage.h"
 
+#include <glm/ext/vector_double3.hpp>
+
 #include <vector>
 
 namespace vct::render {
@@ -22,6 +24,12 @@ struct Scene {
     std::vector<DirectionalLight> directionalLights;
     std::vector<SurfaceLight> surfaceLights; ///< Rectangle and disk area lights (no geometry).
     Camera camera; ///< The scene's suggested view.
+    /**
+     * Where the scene's coordinate origin lies in the world the files describe, in metres. Zero unless a
+     * scene far from the world's origin was rebased on loading (doc::SceneRebase), so that its float
+     * coordinates stay small.
+     */
+    glm::dvec3 origin { 0.0 };
 
     /** World-space bounds of all meshes (transforms applied). */
     Aabb bounds() const;

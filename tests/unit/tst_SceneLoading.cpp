@@ -340,6 +340,11 @@ void TestSceneLoading::brokenGeometryIsDroppedAndReported()
     QVERIFY2(doc::ModelImporter::importModel(path, scene, &error, &report), qPrintable(error));
     QCOMPARE(report.triangles, 2);
     QCOMPARE(report.droppedTriangles, 2);
+    QCOMPARE(report.nonFiniteTriangles, 1);
+    QCOMPARE(report.zeroAreaTriangles, 1);
+    QVERIFY2(report.warnings.join(QLatin1Char('\n'))
+                 .contains(QStringLiteral("1 for a non-finite vertex, 1 for zero area")),
+        qPrintable(report.warnings.join(QLatin1Char('\n'))));
     // JoinIdenticalVertices merges corners whose normals compare unordered (NaN), so fewer than 3 may remain.
     QVERIFY(report.repairedNormals >= 1);
     QCOMPARE(report.meshes, 1);
