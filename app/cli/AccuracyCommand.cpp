@@ -10,6 +10,7 @@
 #include "core/Renderer.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
+#include "files/AtomicFile.h"
 #include "imageio/ImageFile.h"
 #include "plot/ChartWriter.h"
 #include "reference/ReferenceRenderer.h"
@@ -21,7 +22,6 @@
 #include <QGuiApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -41,16 +41,6 @@ int fail(int code, const QString& message)
 {
     std::fprintf(stderr, "vct-bench accuracy: %s\n", qPrintable(message));
     return code;
-}
-
-bool writeText(const QString& path, const std::string& text, QString* error)
-{
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly)
-        && file.write(text.c_str(), qint64(text.size())) == qint64(text.size()) && file.commit())
-        return true;
-    *error = QStringLiteral("cannot write '%1': %2").arg(path, file.errorString());
-    return false;
 }
 
 bool readText(const QString& path, std::string& text, QString* error)
@@ -203,8 +193,9 @@ int merge(const QString& studyDir, const QString& outDir, const QString& title)
     const QDir out(outDir);
     if (!QDir().mkpath(outDir))
         return fail(3, QStringLiteral("cannot create '%1'").arg(outDir));
-    if (!writeText(out.filePath(QStringLiteral("results.csv")), AccuracyCsv::write(report.rows()), &error)
-        || !writeText(out.filePath(QStringLiteral("results.md")), report.markdown(), &error)
+    if (!files::AtomicFile::write(
+            out.filePath(QStringLiteral("results.csv")), AccuracyCsv::write(report.rows()), &error)
+        || !files::AtomicFile::write(out.filePath(QStringLiteral("results.md")), report.markdown(), &error)
         || !plot::ChartWriter::write(
             report.chart(), out.filePath(QStringLiteral("accuracy")), kChartSize, &error)
         || !plot::ChartWriter::write(
@@ -465,7 +456,7 @@ int AccuracyCommand::run(int argc, char** argv)
                 return fail(3, QString::fromStdString(writeError));
             QJsonObject json;
             json[QStringLiteral("key")] = key;
-            if (!writeText(keyPath, QJsonDocument(json).toJson().toStdString(), &error))
+            if (!files::AtomicFile::write(keyPath, QJsonDocument(json).toJson().toStdString(), &error))
                 return fail(3, error);
         }
         referenceDescription = QStringLiteral(
@@ -496,7 +487,7 @@ int AccuracyCommand::run(int argc, char** argv)
         QJsonObject study;
         study[QStringLiteral("scene")] = sceneSpec;
         study[QStringLiteral("header")] = header;
-        return writeText(
+        return files::AtomicFile::write(
             QDir(pointsDir).filePath(kStudyFile), QJsonDocument(study).toJson().toStdString(), problem);
     };
 
@@ -587,7 +578,8 @@ int AccuracyCommand::run(int argc, char** argv)
             std::fprintf(stderr, "vct-bench accuracy: warning: %s\n", warning.c_str());
         std::fprintf(stderr, "  [%d/%d] %-36s %9.1f ms  rel. MSE %.4f  PSNR %.2f dB  (load %.1f)\n", k + 1,
             jobs, row.label.c_str(), row.timeMs(), row.relMse, row.psnr, row.loadAverage);
-        if (!writeText(QDir(pointsDir).filePath(pointFileName(k)), AccuracyCsv::write({ row }), &error))
+        if (!files::AtomicFile::write(
+                QDir(pointsDir).filePath(pointFileName(k)), AccuracyCsv::write({ row }), &error))
             return fail(3, error);
     }
     if (onlyPoint >= 0)

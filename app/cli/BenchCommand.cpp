@@ -7,11 +7,11 @@
 #include "cli/TargetsBenchmark.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
+#include "files/AtomicFile.h"
 #include "imageio/ImageFile.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cstdio>
@@ -190,11 +190,9 @@ int BenchCommand::run(int argc, char** argv)
     }
     std::fputs(report.c_str(), stdout);
     if (parser.isSet(outOption)) {
-        QSaveFile file(parser.value(outOption));
-        if (!file.open(QIODevice::WriteOnly) || file.write(report.c_str(), qint64(report.size())) < 0
-            || !file.commit())
-            return fail(
-                3, QStringLiteral("cannot write '%1': %2").arg(parser.value(outOption), file.errorString()));
+        QString error;
+        if (!files::AtomicFile::write(parser.value(outOption), std::string_view(report), &error))
+            return fail(3, error);
     }
     return 0;
 }

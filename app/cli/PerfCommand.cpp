@@ -5,12 +5,12 @@
 #include "cli/SceneInput.h"
 #include "context/HeadlessContext.h"
 #include "core/Renderer.h"
+#include "files/AtomicFile.h"
 #include "plot/ChartWriter.h"
 
 #include <QCommandLineParser>
 #include <QDir>
 #include <QGuiApplication>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cstdio>
@@ -63,16 +63,6 @@ bool parseInts(const QString& text, std::vector<int>& values)
 bool isPowerOfTwo(int v)
 {
     return v >= 1 && (v & (v - 1)) == 0;
-}
-
-bool writeText(const QString& path, const std::string& text, QString* error)
-{
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly)
-        && file.write(text.c_str(), qint64(text.size())) == qint64(text.size()) && file.commit())
-        return true;
-    *error = QStringLiteral("cannot write '%1': %2").arg(path, file.errorString());
-    return false;
 }
 
 } // namespace
@@ -204,10 +194,11 @@ int PerfCommand::run(int argc, char** argv)
         = "`" + command.join(QLatin1Char(' ')).toStdString() + "` on " + context->description() + ".";
     const PerfReport report(args[1].toStdString(), header, results);
     const QDir dir(outDir);
-    if (!writeText(dir.filePath(QStringLiteral("results.csv")), report.resultsCsv(), &error)
-        || !writeText(dir.filePath(QStringLiteral("efficiency.csv")), report.efficiencyCsv(), &error)
-        || !writeText(dir.filePath(QStringLiteral("memory.csv")), report.memoryCsv(), &error)
-        || !writeText(dir.filePath(QStringLiteral("perf.md")), report.markdown(), &error))
+    if (!files::AtomicFile::write(dir.filePath(QStringLiteral("results.csv")), report.resultsCsv(), &error)
+        || !files::AtomicFile::write(
+            dir.filePath(QStringLiteral("efficiency.csv")), report.efficiencyCsv(), &error)
+        || !files::AtomicFile::write(dir.filePath(QStringLiteral("memory.csv")), report.memoryCsv(), &error)
+        || !files::AtomicFile::write(dir.filePath(QStringLiteral("perf.md")), report.markdown(), &error))
         return fail(3, error);
     for (const NamedChart& chart : report.charts())
         if (!plot::ChartWriter::write(chart.chart, dir.filePath(chart.baseName), kChartSize, &error))

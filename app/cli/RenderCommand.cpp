@@ -11,6 +11,7 @@
 #include "document/LightsFile.h"
 #include "document/ProjectFile.h"
 #include "document/SceneLoader.h"
+#include "files/AtomicFile.h"
 #include "imageio/ImageFile.h"
 #include "imageio/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
@@ -19,7 +20,6 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cstdint>
@@ -113,11 +113,9 @@ int renderReference(const ReferenceRequest& request, const render::Scene& scene,
         json["samples"] = double(stats.samples);
         json["rays"] = double(stats.rays);
         json["non_finite_samples"] = double(stats.nonFiniteSamples);
-        QSaveFile file(statsPath);
-        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0
-            || !file.commit())
-            return fail(
-                3, QStringLiteral("cannot write stats to '%1': %2").arg(statsPath, file.errorString()));
+        if (const QString problem = files::AtomicFile::write(statsPath, QJsonDocument(json).toJson());
+            !problem.isEmpty())
+            return fail(3, QStringLiteral("cannot write stats to '%1': %2").arg(statsPath, problem));
     }
     return nonFinite ? 4 : 0;
 }
@@ -351,12 +349,11 @@ int RenderCommand::run(int argc, char** argv)
     if (parser.isSet(statsOption)) {
         const QJsonObject json
             = statsToJson(timed, settings, sceneSpec, QString::fromStdString(context->description()));
-        QSaveFile file(parser.value(statsOption));
-        if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(json).toJson()) < 0
-            || !file.commit())
-            return fail(3,
-                QStringLiteral("cannot write stats to '%1': %2")
-                    .arg(parser.value(statsOption), file.errorString()));
+        if (const QString problem
+            = files::AtomicFile::write(parser.value(statsOption), QJsonDocument(json).toJson());
+            !problem.isEmpty())
+            return fail(
+                3, QStringLiteral("cannot write stats to '%1': %2").arg(parser.value(statsOption), problem));
         for (const QJsonValue& pass : json["passes"].toArray()) {
             const QJsonObject p = pass.toObject();
             std::printf("  %-13s %-7s %8.2f ms  (%s)\n", qPrintable(p["name"].toString()),

@@ -1,6 +1,7 @@
 #include "CameraFile.h"
 
 #include "JsonFieldReader.h"
+#include "files/AtomicFile.h"
 
 #include <glm/geometric.hpp>
 
@@ -8,7 +9,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 namespace vct::doc {
 
@@ -68,14 +68,7 @@ bool CameraFile::write(const QString& path, const CameraSetup& setup, QString* e
     root.insert(QStringLiteral("width"), setup.width);
     root.insert(QStringLiteral("height"), setup.height);
 
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(QJsonDocument(root).toJson(QJsonDocument::Indented)) < 0 || !file.commit()) {
-        if (error)
-            *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return files::AtomicFile::write(path, QJsonDocument(root).toJson(QJsonDocument::Indented), error);
 }
 
 } // namespace vct::doc

@@ -1,6 +1,7 @@
 #include "ProjectFile.h"
 
 #include "JsonFieldReader.h"
+#include "files/AtomicFile.h"
 
 #include <QDir>
 #include <QFile>
@@ -9,10 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
-#include <QSaveFile>
 
 #include <algorithm>
-#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <limits>
@@ -685,22 +684,8 @@ bool ProjectFile::save(
     if (info.isDir())
         return fail(QStringLiteral("cannot save: a folder of that name is in the way"));
     const QByteArray bytes = toJson(state, modelDir(path, modelRoot));
-    QSaveFile file(path);
-    errno = 0;
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));
-    // Qt 6.4's commit() ignores a failed final flush (a full disk, a file size limit) and would rename a
-    // truncated file over the old one, so the flush is checked here first.
-    if (file.write(bytes) != bytes.size() || !file.flush()) {
-        // A short write leaves Qt without a message of its own; errno still holds the failed write's reason.
-        const int osError = errno;
-        const QString reason = osError != 0 ? qt_error_string(osError) : file.errorString();
-        file.cancelWriting();
-        return fail(
-            QStringLiteral("cannot save: writing failed (%1); any old file is unchanged").arg(reason));
-    }
-    if (!file.commit())
-        return fail(QStringLiteral("cannot save: %1").arg(file.errorString()));
+    if (const QString problem = files::AtomicFile::write(path, bytes); !problem.isEmpty())
+        return fail(QStringLiteral("cannot save: ") + problem);
     return true;
 }
 

@@ -1,7 +1,7 @@
 #include "ExrFile.h"
 
-#include "AtomicFile.h"
 #include "ImageLimits.h"
+#include "files/AtomicFile.h"
 
 #include <ImathBox.h>
 #include <ImfChannelList.h>
@@ -127,7 +127,7 @@ bool ExrFile::write(const std::filesystem::path& path, const render::RadianceIma
             *error = path.string() + ": cannot encode EXR: " + e.what();
         return false;
     }
-    return AtomicFile::write(path, bytes, error);
+    return files::AtomicFile::write(path, bytes, error);
 }
 
 } // namespace vct::io

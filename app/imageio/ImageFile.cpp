@@ -1,9 +1,9 @@
 #include "ImageFile.h"
 
-#include "AtomicFile.h"
 #include "ExrFile.h"
 #include "ImageLimits.h"
 #include "PfmFile.h"
+#include "files/AtomicFile.h"
 
 #include <QBuffer>
 #include <QByteArray>
@@ -44,7 +44,8 @@ bool writePng(const std::filesystem::path& path, const render::RadianceImage& im
             *error = path.string() + ": cannot encode PNG";
         return false;
     }
-    return AtomicFile::write(path, std::string_view(encoded.constData(), std::size_t(encoded.size())), error);
+    return files::AtomicFile::write(
+        path, std::string_view(encoded.constData(), std::size_t(encoded.size())), error);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 #include "PfmFile.h"
 
-#include "AtomicFile.h"
 #include "ImageLimits.h"
+#include "files/AtomicFile.h"
 
 #include <bit>
 #include <cctype>
@@ -201,7 +201,7 @@ bool PfmFile::write(const std::filesystem::path& path, const render::RadianceIma
 {
     if (!ImageLimits::checkWritable(image, path, error))
         return false;
-    return AtomicFile::write(path, encode(image), error);
+    return files::AtomicFile::write(path, encode(image), error);
 }
 
 } // namespace vct::io

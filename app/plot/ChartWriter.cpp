@@ -1,5 +1,6 @@
 #include "plot/ChartWriter.h"
 
+#include "files/AtomicFile.h"
 #include "plot/ChartPainter.h"
 #include "plot/PainterCanvas.h"
 #include "plot/SvgCanvas.h"
@@ -7,7 +8,6 @@
 #include <QBuffer>
 #include <QGuiApplication>
 #include <QPainter>
-#include <QSaveFile>
 
 namespace vct::plot {
 
@@ -15,12 +15,7 @@ namespace {
 
 bool save(const QString& path, const QByteArray& bytes, QString* error)
 {
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.commit())
-        return true;
-    if (error)
-        *error = QStringLiteral("cannot write '%1': %2").arg(path, file.errorString());
-    return false;
+    return files::AtomicFile::write(path, bytes, error);
 }
 
 } // namespace
