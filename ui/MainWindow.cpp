@@ -7,6 +7,7 @@
 #include "ReferenceCompareDock.h"
 #include "RenderSettingsDock.h"
 #include "SceneGraphDock.h"
+#include "ShaderFolder.h"
 #include "ShortcutsDialog.h"
 #include "StatsDock.h"
 #include "TransformDock.h"
@@ -257,6 +258,12 @@ void MainWindow::buildMenus()
         m_compareDock->raise();
         m_compareDock->startComparison();
     });
+    QAction* reload = renderMenu->addAction(tr("Re&load shaders"));
+    reload->setObjectName(QStringLiteral("reloadShadersAction"));
+    reload->setShortcut(QKeySequence(Qt::Key_F5));
+    reload->setToolTip(tr("Rebuild every shader from the shaders/ folder ($VCT_SHADER_DIR, else the source "
+                          "tree); a shader that fails to compile keeps its last good version"));
+    connect(reload, &QAction::triggered, this, &MainWindow::reloadShaders);
     QAction* chart = renderMenu->addAction(tr("&Accuracy chart"));
     chart->setObjectName(QStringLiteral("accuracyChartAction"));
     connect(chart, &QAction::triggered, this, [this] {
@@ -435,6 +442,29 @@ bool MainWindow::importModel(const QString& path, float unitScale)
     m_document->addImportedModel(path, std::move(loaded.scene), unitScale);
     statusBar()->showMessage(tr("Imported %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
+}
+
+bool MainWindow::reloadShaders()
+{
+    const QString folder = ShaderFolder::forReload();
+    if (folder.isEmpty()) {
+        statusBar()->showMessage(tr("No shaders to reload: set VCT_SHADER_DIR to a shaders/ folder (this "
+                                    "editor's source tree is gone)"),
+            10000);
+        return false;
+    }
+    const QStringList failures = m_viewport->reloadShaders(folder);
+    if (failures.isEmpty()) {
+        statusBar()->showMessage(tr("Shaders reloaded from %1").arg(QDir::toNativeSeparators(folder)), 5000);
+        return true;
+    }
+    for (const QString& failure : failures)
+        qWarning("shader reload: %s", qPrintable(failure));
+    // The first line of the driver's log names the file and line; the rest goes to the log.
+    statusBar()->showMessage(
+        tr("Shader reload: %n program(s) kept their last good version: %1", nullptr, int(failures.size()))
+            .arg(failures.first().section(QLatin1Char('\n'), 0, 1).simplified()));
+    return false;
 }
 
 bool MainWindow::exportImage(const QString& path)

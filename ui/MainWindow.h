@@ -67,6 +67,12 @@ public:
     /** Imports on a worker thread behind a progress dialog; `unitScale` is metres per model unit. */
     bool importModel(const QString& path, float unitScale = 1.0f);
     bool exportImage(const QString& path);
+    /**
+     * Render > Reload shaders (F5): rebuilds every shader from ShaderFolder::forReload() and says in the
+     * status bar what came of it; the failures (each program keeps its last good build) also go to the log.
+     * False when there is no folder or a program failed.
+     */
+    bool reloadShaders();
 
 protected:
     void closeEvent(QCloseEvent* event) override;

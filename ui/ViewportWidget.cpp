@@ -184,6 +184,21 @@ render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, ren
     return image;
 }
 
+QStringList ViewportWidget::reloadShaders(const QString& folder)
+{
+    if (!m_renderer)
+        return {};
+    makeCurrent();
+    const std::vector<std::string> failures
+        = m_renderer->reloadShaders(folder.toStdString());
+    doneCurrent();
+    update();
+    QStringList result;
+    for (const std::string& failure : failures)
+        result << QString::fromStdString(failure);
+    return result;
+}
+
 std::size_t ViewportWidget::occupiedVoxelCount()
 {
     if (!m_renderer || m_levelCount == 0)

@@ -74,6 +74,12 @@ public:
      * do): Help > Keyboard shortcuts lists them beside the actions' shortcuts.
      */
     static QList<std::pair<QString, QString>> inputBindings();
+    /**
+     * Rebuilds every shader program from the shaders/ folder `folder` and redraws. A program whose new text
+     * does not compile keeps its last good build: the failures come back, one message each; empty when all
+     * rebuilt (or there is no renderer yet, which reads the folder when it starts: nothing to rebuild).
+     */
+    QStringList reloadShaders(const QString& folder);
 
 public slots:
     /** Frames the selected node, or with nothing selected, the whole scene as frameAll() does. */

@@ -7,7 +7,7 @@ namespace vct::render {
 std::uint64_t FiniteCheck::count(const gl::Texture& texture, int level)
 {
     const bool volume = texture.target() == GL_TEXTURE_3D;
-    gl::Program& program = volume ? m_volume : m_flat;
+    const gl::Program& program = volume ? *m_volume : *m_flat;
     const std::uint32_t zero = 0;
     m_counter.upload(&zero, sizeof zero);
     m_counter.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
@@ -27,8 +27,9 @@ std::vector<NonFiniteCount> FiniteCheck::run(
     const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels)
 {
     if (!m_flat) {
-        m_flat = shaders.build({ "count non-finite (2D)", { "check/CountNonFinite.comp" }, {} });
-        m_volume = shaders.build({ "count non-finite (3D)", { "check/CountNonFinite.comp" }, { "VOLUME" } });
+        m_flat = &shaders.program({ "count non-finite (2D)", { "check/CountNonFinite.comp" }, {} });
+        m_volume
+            = &shaders.program({ "count non-finite (3D)", { "check/CountNonFinite.comp" }, { "VOLUME" } });
         m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     std::vector<NonFiniteCount> counts;

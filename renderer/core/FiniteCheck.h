@@ -23,8 +23,8 @@ public:
 
 private:
     std::uint64_t count(const gl::Texture& texture, int level);
-    gl::Program m_flat;
-    gl::Program m_volume;
+    const gl::Program* m_flat = nullptr;
+    const gl::Program* m_volume = nullptr;
     gl::Buffer m_counter;
 };
 

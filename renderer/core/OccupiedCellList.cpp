@@ -11,7 +11,7 @@ void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& al
     const VoxelRegion& region, int cellSize, const gl::Texture* clearTarget, glm::vec4 clearValue)
 {
     if (!m_program)
-        m_program = shaders.build({ "occupied cells", { "common/ListOccupied.comp" }, {} });
+        m_program = &shaders.program({ "occupied cells", { "common/ListOccupied.comp" }, {} });
     if (clearTarget && !region.isEmpty()) {
         const glm::ivec3 lo = region.lo, size = region.size();
         glClearTexSubImage(clearTarget->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT,
@@ -19,8 +19,8 @@ void OccupiedCellList::build(const ShaderLibrary& shaders, const gl::Texture& al
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     albedo.bindUnit(0);
-    m_program.set("uCellSize", cellSize);
-    buildWith(m_program, region);
+    m_program->set("uCellSize", cellSize);
+    buildWith(*m_program, region);
 }
 
 void OccupiedCellList::reset(std::size_t capacity, unsigned binding)

@@ -47,7 +47,7 @@ public:
     void dispatchOverCells() const;
 
 private:
-    gl::Program m_program;
+    const gl::Program* m_program = nullptr;
     gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the count
     gl::Buffer m_cells; ///< packed cell coordinates, 10 bits per axis
 };

@@ -42,7 +42,6 @@ struct Renderer::State {
     Aabb staticMaterialEdits; ///< since the last frame
     VoxelInspector inspector;
     FiniteCheck finiteCheck;
-    gl::Program presentProgram;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
     VoxelMipBuilder boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureBoxMips)
@@ -315,6 +314,14 @@ void Renderer::invalidate()
     m_state->pipeline->invalidate();
 }
 
+std::vector<std::string> Renderer::reloadShaders(const std::string& folder)
+{
+    std::vector<std::string> failures = m_state->shaders->reload(ShaderLibrary::folderLookup(folder));
+    // New shader text may change any pass's output, the voxels' too.
+    invalidate();
+    return failures;
+}
+
 FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
 {
     State& st = *m_state;
@@ -362,17 +369,16 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
     State& st = *m_state;
     if (!st.screen.final || width <= 0 || height <= 0)
         return;
-    if (!st.presentProgram) {
-        st.presentProgram
-            = st.shaders->build({ "present", { "common/FullScreen.vert", "present/Present.frag" }, {} });
+    if (!st.emptyVao)
         st.emptyVao = gl::VertexArray::create();
-    }
+    const gl::Program& program
+        = st.shaders->program({ "present", { "common/FullScreen.vert", "present/Present.frag" }, {} });
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(x, y, width, height);
     glDisable(GL_DEPTH_TEST);
-    st.presentProgram.use();
-    st.presentProgram.set("uExposure", exposure);
-    st.presentProgram.set("uTarget", glm::vec4(float(x), float(y), float(width), float(height)));
+    program.use();
+    program.set("uExposure", exposure);
+    program.set("uTarget", glm::vec4(float(x), float(y), float(width), float(height)));
     st.screen.final.bindUnit(0);
     st.emptyVao.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);

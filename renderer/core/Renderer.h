@@ -53,6 +53,12 @@ public:
     /** Forgets every cached pass output: the next frame runs every pass (benchmarks, forced-full
      * comparisons). */
     void invalidate();
+    /**
+     * Rebuilds every shader program with the text of the shaders/ folder `folder` (a file it lacks keeps its
+     * built-in text: the editor's F5) and runs every pass on the next frame. A program that fails to compile
+     * keeps its last good build; the failures come back, one message each (program, file, driver log).
+     */
+    std::vector<std::string> reloadShaders(const std::string& folder);
     /** Renders one frame into the internal HDR target. */
     FrameStats renderFrame(const Camera& camera, int width, int height);
     /**

@@ -12,21 +12,31 @@ const std::map<std::string, std::string>& embeddedShaderSources();
 
 namespace {
 
-std::optional<std::string> defaultLookup(const std::string& path)
+std::optional<std::string> readFile(const std::string& path)
 {
-    if (const char* dir = std::getenv("VCT_SHADER_DIR"); dir && *dir) {
-        std::ifstream file(std::string(dir) + "/" + path, std::ios::binary);
-        if (file) {
-            std::ostringstream text;
-            text << file.rdbuf();
-            return text.str();
-        }
-    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        return std::nullopt;
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+std::optional<std::string> embedded(const std::string& path)
+{
     const auto& sources = embeddedShaderSources();
     const auto it = sources.find(path);
     if (it == sources.end())
         return std::nullopt;
     return it->second;
+}
+
+std::optional<std::string> defaultLookup(const std::string& path)
+{
+    if (const char* dir = std::getenv("VCT_SHADER_DIR"); dir && *dir)
+        if (std::optional<std::string> text = readFile(std::string(dir) + "/" + path))
+            return text;
+    return embedded(path);
 }
 
 GLenum stageOf(const std::string& path)
@@ -42,6 +52,17 @@ GLenum stageOf(const std::string& path)
     if (ends(".comp"))
         return GL_COMPUTE_SHADER;
     throw std::runtime_error("shader file '" + path + "' has no stage extension (.vert .geom .frag .comp)");
+}
+
+std::string keyOf(const ProgramDesc& desc)
+{
+    std::string key;
+    for (const std::string& file : desc.stageFiles)
+        key += file + '\n';
+    key += '\n';
+    for (const std::string& define : desc.defines)
+        key += define + '\n';
+    return key;
 }
 
 } // namespace
@@ -96,6 +117,39 @@ std::string ShaderLibrary::preprocess(const std::string& path, const std::vector
         out << "#define " << define << "\n";
     out << "#line 1 0\n" << body;
     return out.str();
+}
+
+const gl::Program& ShaderLibrary::program(const ProgramDesc& desc) const
+{
+    const std::string key = keyOf(desc);
+    if (const auto it = m_programs.find(key); it != m_programs.end())
+        return it->second.program;
+    gl::Program built = build(desc);
+    return m_programs.emplace(key, Kept { desc, std::move(built) }).first->second.program;
+}
+
+std::vector<std::string> ShaderLibrary::reload(Lookup lookup)
+{
+    m_lookup = std::move(lookup);
+    std::vector<std::string> failures;
+    for (auto& [key, kept] : m_programs) {
+        try {
+            kept.program = build(kept.desc);
+        } catch (const std::exception& e) {
+            failures.push_back(kept.desc.name + ": " + e.what());
+        }
+    }
+    return failures;
+}
+
+ShaderLibrary::Lookup ShaderLibrary::folderLookup(const std::string& dir)
+{
+    // A file the folder lacks keeps its built-in text, as VCT_SHADER_DIR does.
+    return [dir](const std::string& path) -> std::optional<std::string> {
+        if (std::optional<std::string> text = readFile(dir + "/" + path))
+            return text;
+        return embedded(path);
+    };
 }
 
 gl::Program ShaderLibrary::build(const ProgramDesc& desc) const

@@ -24,7 +24,7 @@ const VoxelListing& VoxelInspector::list(
     if (m_valid && key == m_key)
         return m_listing;
     if (!m_compact) {
-        m_compact = shaders.build({ "inspector compact", { "inspector/CompactVoxels.comp" }, {} });
+        m_compact = &shaders.program({ "inspector compact", { "inspector/CompactVoxels.comp" }, {} });
         m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     const int size = std::max(1, volume.frame.resolution >> level);
@@ -41,11 +41,11 @@ const VoxelListing& VoxelInspector::list(
     volume.albedo.bindUnit(2);
     m_entries.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     m_counter.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    m_compact.use();
-    m_compact.set("uLevel", level);
-    m_compact.set("uChannelKind", int(channel));
-    m_compact.set("uLevelSize", size);
-    m_compact.set("uCapacity", unsigned(capacity));
+    m_compact->use();
+    m_compact->set("uLevel", level);
+    m_compact->set("uChannelKind", int(channel));
+    m_compact->set("uLevelSize", size);
+    m_compact->set("uCapacity", unsigned(capacity));
     const GLuint groups = GLuint((size + 3) / 4);
     glDispatchCompute(groups, groups, groups);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -72,16 +72,16 @@ std::size_t VoxelInspector::draw(
     if (!m_valid || m_listing.samples.empty())
         return 0;
     if (!m_cubes) {
-        m_cubes = shaders.build(
+        m_cubes = &shaders.program(
             { "inspector cubes", { "inspector/VoxelCube.vert", "inspector/VoxelCube.frag" }, {} });
         m_emptyVao = gl::VertexArray::create();
     }
-    m_cubes.use();
-    m_cubes.set("uViewProjection", viewProjection);
-    m_cubes.set("uGridOrigin", m_listing.origin);
-    m_cubes.set("uCellSize", m_listing.cellSize);
-    m_cubes.set("uChannelKind", int(m_listing.channel));
-    m_cubes.set("uExposure", exposure);
+    m_cubes->use();
+    m_cubes->set("uViewProjection", viewProjection);
+    m_cubes->set("uGridOrigin", m_listing.origin);
+    m_cubes->set("uCellSize", m_listing.cellSize);
+    m_cubes->set("uChannelKind", int(m_listing.channel));
+    m_cubes->set("uExposure", exposure);
     m_entries.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     m_emptyVao.bind();
     glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(m_listing.samples.size()));

@@ -25,8 +25,8 @@ public:
     std::size_t draw(const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure);
 
 private:
-    gl::Program m_compact;
-    gl::Program m_cubes;
+    const gl::Program* m_compact = nullptr;
+    const gl::Program* m_cubes = nullptr;
     gl::Buffer m_entries;
     gl::Buffer m_counter;
     gl::VertexArray m_emptyVao;

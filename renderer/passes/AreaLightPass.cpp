@@ -21,11 +21,9 @@ PassDecision AreaLightPass::plan(const FrameContext& frame)
 void AreaLightPass::execute(FrameContext& frame)
 {
     const int lights = FrameRules::areaLightCount(frame);
-    gl::Program& program = m_programs[lights];
-    if (!program)
-        program = frame.shaders.build(
-            { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" },
-                { "AREA_LIGHT_COUNT " + std::to_string(lights) } });
+    const gl::Program& program = frame.shaders.program(
+        { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" },
+            { "AREA_LIGHT_COUNT " + std::to_string(lights) } });
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;

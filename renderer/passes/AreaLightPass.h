@@ -26,7 +26,6 @@ public:
     void invalidate() override { }
 
 private:
-    gl::Program m_programs[17]; ///< by area light count, 1..AreaLightSet::kMaxLights
     gl::VertexArray m_emptyVao;
 };
 

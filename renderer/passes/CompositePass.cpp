@@ -70,10 +70,8 @@ void CompositePass::execute(FrameContext& frame)
         classes.insert(pixelClassOf(frame.scene.materialOf(mesh)));
     for (const std::uint32_t pixelClass : classes) {
         std::vector<std::string> defines = variantDefines(frame, pixelClass);
-        gl::Program& program = m_programs[defines];
-        if (!program)
-            program = frame.shaders.build({ "composite",
-                { "common/FullScreen.vert", "composite/Composite.frag" }, std::move(defines) });
+        const gl::Program& program = frame.shaders.program(
+            { "composite", { "common/FullScreen.vert", "composite/Composite.frag" }, std::move(defines) });
         program.use();
         applyLightUniforms(program, scene, frame.shadows);
         program.set("uCameraPosition", frame.camera.position);

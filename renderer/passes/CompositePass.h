@@ -33,7 +33,6 @@ private:
      * (shaders/composite/Composite.frag). */
     static std::vector<std::string> variantDefines(const FrameContext& frame, std::uint32_t pixelClass);
 
-    std::map<std::vector<std::string>, gl::Program> m_programs; // built on first use of each frame shape
     gl::VertexArray m_emptyVao;
 };
 

@@ -38,7 +38,7 @@ PassDecision ConeTracePass::plan(const FrameContext& frame)
 
 namespace {
 
-gl::Program buildVariant(
+const gl::Program& variant(
     const ShaderLibrary& shaders, const char* name, const char* file, bool anisotropic, bool counting)
 {
     std::vector<std::string> defines;
@@ -51,7 +51,7 @@ gl::Program buildVariant(
         defines.emplace_back("COUNT_SAMPLES");
         label += ", counting samples";
     }
-    return shaders.build({ label, { "common/FullScreen.vert", file }, defines });
+    return shaders.program({ label, { "common/FullScreen.vert", file }, defines });
 }
 
 } // namespace
@@ -78,7 +78,7 @@ void ConeTracePass::execute(FrameContext& frame)
 
     // Each grid: first the classify draw, whose own stencil value (ARB_shader_stencil_export) replaces what
     // was there, then the cones on the pixels of their class only.
-    const auto classifyGrid = [&](gl::Program& classify, int divisor) {
+    const auto classifyGrid = [&](const gl::Program& classify, int divisor) {
         glStencilMask(0xFF);
         glStencilFunc(GL_ALWAYS, 0, 0xFF);
         glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
@@ -91,7 +91,7 @@ void ConeTracePass::execute(FrameContext& frame)
         glStencilMask(0x00);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     };
-    const auto traceClass = [&](gl::Program& cones, int divisor, std::uint32_t pixelClass) {
+    const auto traceClass = [&](const gl::Program& cones, int divisor, std::uint32_t pixelClass) {
         glStencilFunc(GL_EQUAL, GLint(pixelClass), GLuint(pixelClass));
         ConeTracingSetup::apply(cones, frame, anisotropic, true);
         cones.set("uDivisor", divisor);
@@ -103,12 +103,10 @@ void ConeTracePass::execute(FrameContext& frame)
     };
 
     // The diffuse grid: the guide always (the composite upsamples it), diffuse light where needed.
-    gl::Program& classify = m_classify[cached ? 1 : 0];
-    if (!classify)
-        classify = frame.shaders.build(
-            { cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
-                { "common/FullScreen.vert", "cone/ClassifyPixels.frag" },
-                cached ? std::vector<std::string> { "IRRADIANCE_CACHE" } : std::vector<std::string> {} });
+    const gl::Program& classify = frame.shaders.program(
+        { cached ? "cone trace: classify pixels, irradiance cache" : "cone trace: classify pixels",
+            { "common/FullScreen.vert", "cone/ClassifyPixels.frag" },
+            cached ? std::vector<std::string> { "IRRADIANCE_CACHE" } : std::vector<std::string> {} });
     if (cached) {
         v.irradiance.bindUnit(12);
         v.irradianceNormal.bindUnit(13);
@@ -123,10 +121,8 @@ void ConeTracePass::execute(FrameContext& frame)
     s.indirectTarget.drawTo({ 0, 1 });
     classifyGrid(classify, s.indirectDivisor);
     if (diffuse) {
-        gl::Program& cones = m_diffuse[anisotropic ? 1 : 0][counting ? 1 : 0];
-        if (!cones)
-            cones = buildVariant(
-                frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
+        const gl::Program& cones = variant(
+            frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
         s.indirectTarget.drawTo({ 0 });
         cones.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
         cones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
@@ -136,19 +132,17 @@ void ConeTracePass::execute(FrameContext& frame)
 
     // The specular grid, when some material is glossy: pixels no cone reaches read as no specular light.
     if (specular) {
-        if (!m_classifySpecular)
-            m_classifySpecular = frame.shaders.build({ "cone trace: classify pixels, specular grid",
+        const gl::Program& classifySpecular
+            = frame.shaders.program({ "cone trace: classify pixels, specular grid",
                 { "common/FullScreen.vert", "cone/ClassifyPixels.frag" }, { "SPECULAR_GRID" } });
-        gl::Program& cone = m_specular[anisotropic ? 1 : 0][counting ? 1 : 0];
-        if (!cone)
-            cone = buildVariant(
-                frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
+        const gl::Program& cone = variant(
+            frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
         s.specularTarget.bind();
         glViewport(0, 0, s.specular.width(), s.specular.height());
         const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearNamedFramebufferfv(s.specularTarget.id(), GL_COLOR, 0, none);
         s.specularTarget.drawTo({ 1 });
-        classifyGrid(m_classifySpecular, s.specularDivisor);
+        classifyGrid(classifySpecular, s.specularDivisor);
         s.specularTarget.drawTo({ 0 });
         cone.set("uSpecularMinTanHalf", std::tan(glm::radians(settings.specularApertureDeg * 0.5f)));
         cone.set("uCameraPosition", frame.camera.position);

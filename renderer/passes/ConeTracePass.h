@@ -28,12 +28,6 @@ public:
     void invalidate() override { }
 
 private:
-    /// [irradiance cache lookup]: the diffuse grid's; and the specular grid's
-    gl::Program m_classify[2];
-    gl::Program m_classifySpecular;
-    /// [anisotropic mips][COUNT_SAMPLES for vct-bench perf]
-    gl::Program m_diffuse[2][2];
-    gl::Program m_specular[2][2];
     gl::VertexArray m_emptyVao;
 };
 

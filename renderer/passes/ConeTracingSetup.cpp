@@ -10,7 +10,7 @@
 namespace vct::render {
 
 void ConeTracingSetup::apply(
-    gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
+    const gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
 {
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
@@ -40,9 +40,9 @@ void ConeTracingSetup::apply(
     }
 }
 
-void ConeTracingSetup::applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic,
-    bool useBounced, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
-    const gl::Texture& normals)
+void ConeTracingSetup::applyCellGather(const gl::Program& program, const FrameContext& frame,
+    bool anisotropic, bool useBounced, int cellSize, bool ao, const gl::Texture& front,
+    const gl::Texture& back, const gl::Texture& normals)
 {
     const VoxelVolume& v = frame.voxels;
     apply(program, frame, anisotropic, useBounced);

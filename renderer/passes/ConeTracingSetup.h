@@ -14,13 +14,14 @@ struct FrameContext;
  */
 class ConeTracingSetup {
 public:
-    static void apply(gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced);
+    static void apply(
+        const gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced);
     /**
      * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to
      * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
      * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
      */
-    static void applyCellGather(gl::Program& program, const FrameContext& frame, bool anisotropic,
+    static void applyCellGather(const gl::Program& program, const FrameContext& frame, bool anisotropic,
         bool useBounced, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
         const gl::Texture& normals);
 };

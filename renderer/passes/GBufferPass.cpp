@@ -10,12 +10,11 @@ namespace vct::render {
 
 void GBufferPass::execute(FrameContext& frame)
 {
-    if (!m_programs[0]) {
-        m_programs[0]
-            = frame.shaders.build({ "g-buffer", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, {} });
-        m_programs[1] = frame.shaders.build(
-            { "g-buffer (textured)", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, { "TEXTURED" } });
-    }
+    const gl::Program* programs[2] = {
+        &frame.shaders.program({ "g-buffer", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, {} }),
+        &frame.shaders.program(
+            { "g-buffer (textured)", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, { "TEXTURED" } }),
+    };
     ScreenTargets& s = frame.screen;
     s.gbuffer.bind();
     glViewport(0, 0, s.width, s.height);
@@ -48,11 +47,11 @@ void GBufferPass::execute(FrameContext& frame)
     }
     options.stencilPixelClass = true;
     for (const bool textured : { false, true }) {
-        m_programs[textured].set("uViewProjection", eyeViewProjection);
-        m_programs[textured].set("uCameraPosition", camera.position);
-        m_programs[textured].set("uCameraForward", glm::normalize(camera.lookAt - camera.position));
+        programs[textured]->set("uViewProjection", eyeViewProjection);
+        programs[textured]->set("uCameraPosition", camera.position);
+        programs[textured]->set("uCameraForward", glm::normalize(camera.lookAt - camera.position));
         options.materials = [textured](const Material& m) { return (m.albedoTexture >= 0) == textured; };
-        frame.scene.draw(m_programs[textured], options, 0);
+        frame.scene.draw(*programs[textured], options, 0);
     }
     glDisable(GL_STENCIL_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -15,7 +15,6 @@ public:
     void invalidate() override { }
 
 private:
-    gl::Program m_programs[2]; ///< [0] untextured materials, [1] TEXTURED
 };
 
 } // namespace vct::render

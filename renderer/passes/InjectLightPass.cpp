@@ -114,23 +114,23 @@ void InjectLightPass::buildOpacity(FrameContext& frame)
     if (v.opacityVersion == v.materialsVersion)
         return;
     if (!m_markOpacity) {
-        m_markOpacity = frame.shaders.build({ "mark opacity", { "inject/MarkOpacity.comp" }, {} });
+        m_markOpacity = &frame.shaders.program({ "mark opacity", { "inject/MarkOpacity.comp" }, {} });
         m_downsampleOpacity
-            = frame.shaders.build({ "downsample opacity", { "inject/DownsampleOpacity.comp" }, {} });
+            = &frame.shaders.program({ "downsample opacity", { "inject/DownsampleOpacity.comp" }, {} });
     }
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearTexImage(v.opacity.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    m_markOpacity.use();
+    m_markOpacity->use();
     v.opacity.bindImage(0, 0, GL_WRITE_ONLY);
     for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
         voxels->dispatchOverCells();
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    m_downsampleOpacity.use();
+    m_downsampleOpacity->use();
     v.opacity.bindUnit(0);
     for (int level = 1; level < v.opacity.levels(); ++level) {
         const int side = std::max(1, v.opacity.width() >> level);
-        m_downsampleOpacity.set("uSourceLevel", level - 1);
+        m_downsampleOpacity->set("uSourceLevel", level - 1);
         v.opacity.bindImage(0, level, GL_WRITE_ONLY);
         const GLuint groups = GLuint((side + 3) / 4);
         glDispatchCompute(groups, groups, groups);
@@ -145,12 +145,10 @@ void InjectLightPass::execute(FrameContext& frame)
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     const int areas = FrameRules::areaLightCount(frame);
-    gl::Program& program = m_programs[{ points, directionals, areas }];
-    if (!program)
-        program = frame.shaders.build({ "inject light", { "inject/InjectLight.comp" },
-            { "POINT_LIGHT_COUNT " + std::to_string(points),
-                "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
-                "AREA_LIGHT_COUNT " + std::to_string(areas) } });
+    const gl::Program& program = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" },
+        { "POINT_LIGHT_COUNT " + std::to_string(points),
+            "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
+            "AREA_LIGHT_COUNT " + std::to_string(areas) } });
     if (areas > 0)
         buildOpacity(frame);
     const VoxelRegion region = regionToInject(frame);

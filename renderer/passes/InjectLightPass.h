@@ -36,10 +36,8 @@ private:
     VoxelRegion regionToInject(const FrameContext& frame) const;
     /** Level 0 of VoxelVolume::opacity from the occupied voxels, and its mips, when the voxels changed. */
     void buildOpacity(FrameContext& frame);
-    std::map<std::tuple<int, int, int>, gl::Program>
-        m_programs; ///< by point, directional and area light count
-    gl::Program m_markOpacity;
-    gl::Program m_downsampleOpacity;
+    const gl::Program* m_markOpacity = nullptr;
+    const gl::Program* m_downsampleOpacity = nullptr;
     OccupiedCellList m_occupied;
     std::array<std::uint64_t, 5> m_key {};
 };

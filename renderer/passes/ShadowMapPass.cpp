@@ -90,7 +90,7 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
         = glm::perspective(glm::radians(90.0f), 1.0f, shadows.pointNear, shadows.pointFar);
     for (int i = 0; i < points; ++i) {
         const PointLight& light = scene.pointLights[std::size_t(i)];
-        m_program.set("uOrigin", light.position);
+        m_program->set("uOrigin", light.position);
         const Viewpoint eye { light.position,
             1.01f * shadows.pointNear * std::sqrt(3.0f) }; // 90-degree faces
         for (int face = 0; face < 6; ++face) {
@@ -101,7 +101,7 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
             if (!light.castsShadows)
                 continue;
             const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceDirection[face], kFaceUp[face]);
-            m_program.set("uViewProjection", cubeProjection * view);
+            m_program->set("uViewProjection", cubeProjection * view);
             // A face sees about a sixth of the scene around its light: draw only the clusters it can see.
             const Frustum faceView(cubeProjection * view, light.position);
             DrawOptions options;
@@ -110,10 +110,10 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
                 options.visibleIn = &faceView;
                 options.from = &eye;
             }
-            frame.scene.draw(m_program, options, 0);
+            frame.scene.draw(*m_program, options, 0);
         }
     }
-    m_program.set("uOrigin", glm::vec3(0.0f));
+    m_program->set("uOrigin", glm::vec3(0.0f));
     for (int i = 0; i < directionals; ++i) {
         shadows.framebuffer.attachDepthLayer(directional, i);
         shadows.framebuffer.finish(0);
@@ -121,13 +121,13 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
             glClearNamedFramebufferfv(shadows.framebuffer.id(), GL_DEPTH, 0, &clearDepth);
         if (!scene.directionalLights[std::size_t(i)].castsShadows)
             continue;
-        m_program.set("uViewProjection", shadows.directionalMatrices[std::size_t(i)]);
+        m_program->set("uViewProjection", shadows.directionalMatrices[std::size_t(i)]);
         const Frustum lightView(shadows.directionalMatrices[std::size_t(i)], glm::vec3(0.0f));
         DrawOptions options;
         options.layer = filter;
         if (frame.settings.viewCulling)
             options.visibleIn = &lightView;
-        frame.scene.draw(m_program, options, 0);
+        frame.scene.draw(*m_program, options, 0);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -135,7 +135,7 @@ void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, cons
 void ShadowMapPass::execute(FrameContext& frame)
 {
     if (!m_program)
-        m_program = frame.shaders.build(
+        m_program = &frame.shaders.program(
             { "shadow depth", { "shadow/ShadowDepth.vert", "shadow/ShadowDepth.frag" }, {} });
     m_key = keyOf(frame);
     const Scene& scene = frame.scene.scene();

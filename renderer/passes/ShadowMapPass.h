@@ -30,7 +30,7 @@ private:
     void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
         MeshFilter filter, bool clear);
 
-    gl::Program m_program;
+    const gl::Program* m_program = nullptr;
     gl::Texture m_staticPoint; ///< static casters only, when dynamic meshes exist
     gl::Texture m_staticDirectional;
     std::array<std::uint64_t, 4> m_key {};

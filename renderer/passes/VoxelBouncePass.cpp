@@ -78,7 +78,9 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
     const int cells = res / cellSize;
 
     // Gather: the irradiance cache's shader, over every occupied cell, from the current iterate.
-    gl::Program& gather = m_gather[anisotropic ? 1 : 0];
+    const gl::Program& gather = frame.shaders.program(
+        { anisotropic ? "bounce cells (anisotropic)" : "bounce cells", { "irradiance/GatherCells.comp" },
+            anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
     ConeTracingSetup::applyCellGather(gather, frame, anisotropic, fromBounced, cellSize, false,
         v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal);
     gather.use();
@@ -90,14 +92,14 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
     if (!compare) // stale voxels of an earlier occupancy must not stay lit
         glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    m_reinject.use();
-    m_reinject.set("uGridOrigin", v.frame.origin);
-    m_reinject.set("uVoxelSize", v.frame.voxelSize());
-    m_reinject.set("uCellVoxels", cellSize);
-    m_reinject.set("uCells", cells);
-    m_reinject.set("uCellSize", v.frame.extent / float(cells));
-    m_reinject.set("uCompare", compare ? 1 : 0);
-    m_reinject.set("uResidualSlot", slot);
+    m_reinject->use();
+    m_reinject->set("uGridOrigin", v.frame.origin);
+    m_reinject->set("uVoxelSize", v.frame.voxelSize());
+    m_reinject->set("uCellVoxels", cellSize);
+    m_reinject->set("uCells", cells);
+    m_reinject->set("uCellSize", v.frame.extent / float(cells));
+    m_reinject->set("uCompare", compare ? 1 : 0);
+    m_reinject->set("uResidualSlot", slot);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.radiance.bindUnit(2);
@@ -133,12 +135,8 @@ std::vector<double> VoxelBouncePass::readResiduals(int count)
 void VoxelBouncePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (!m_reinject) {
-        m_gather[0] = frame.shaders.build({ "bounce cells", { "irradiance/GatherCells.comp" }, {} });
-        m_gather[1] = frame.shaders.build(
-            { "bounce cells (anisotropic)", { "irradiance/GatherCells.comp" }, { "ANISOTROPIC" } });
-        m_reinject = frame.shaders.build({ "bounce reinjection", { "bounce/ReinjectBounce.comp" }, {} });
-    }
+    if (!m_reinject)
+        m_reinject = &frame.shaders.program({ "bounce reinjection", { "bounce/ReinjectBounce.comp" }, {} });
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.bounceCellSize, res);
     const int cells = res / cellSize;

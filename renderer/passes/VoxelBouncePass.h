@@ -59,8 +59,7 @@ private:
     std::vector<double> readResiduals(int count);
     static constexpr int kResidualSlots = 8; ///< iterations whose residuals one readback collects
 
-    gl::Program m_gather[2]; ///< irradiance/GatherCells.comp; [1] anisotropic
-    gl::Program m_reinject;
+    const gl::Program* m_reinject = nullptr;
     OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
     gl::Texture m_residualSums; ///< r32f, 2 x kResidualSlots: per iteration, sum of |change| and of radiance

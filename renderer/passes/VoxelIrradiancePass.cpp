@@ -73,20 +73,17 @@ void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
 
 void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew)
 {
-    if (!m_request[0]) {
-        const std::vector<std::string> stages { "common/FullScreen.vert", "irradiance/RequestCells.frag" };
-        m_request[0] = frame.shaders.build({ "irradiance cache: request cells", stages, {} });
-        m_request[1]
-            = frame.shaders.build({ "irradiance cache: request and list new cells", stages, { "LIST_NEW" } });
-        m_listRequested[0] = frame.shaders.build(
-            { "irradiance cache: list requested cells", { "irradiance/ListRequested.comp" }, {} });
-        m_listRequested[1]
-            = frame.shaders.build({ "irradiance cache: list requested cells, from the new ones",
-                { "irradiance/ListRequested.comp" }, { "FROM_LIST" } });
+    if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
-    }
-    gl::Program& request = m_request[fewNew ? 1 : 0];
-    gl::Program& lister = m_listRequested[fewNew ? 1 : 0];
+    const std::vector<std::string> stages { "common/FullScreen.vert", "irradiance/RequestCells.frag" };
+    const gl::Program& request = fewNew
+        ? frame.shaders.program({ "irradiance cache: request and list new cells", stages, { "LIST_NEW" } })
+        : frame.shaders.program({ "irradiance cache: request cells", stages, {} });
+    const gl::Program& lister = fewNew
+        ? frame.shaders.program({ "irradiance cache: list requested cells, from the new ones",
+            { "irradiance/ListRequested.comp" }, { "FROM_LIST" } })
+        : frame.shaders.program(
+            { "irradiance cache: list requested cells", { "irradiance/ListRequested.comp" }, {} });
     const std::size_t capacity = std::size_t(cells) * std::size_t(cells) * std::size_t(cells);
     VoxelVolume& v = frame.voxels;
     const ScreenTargets& s = frame.screen;
@@ -137,12 +134,10 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips && v.directional;
-    gl::Program& program = m_gather[anisotropic ? 1 : 0];
-    if (!program) {
-        program = frame.shaders.build({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
+    const gl::Program& program
+        = frame.shaders.program({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
             { "irradiance/GatherCells.comp" },
             anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
-    }
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;

@@ -63,9 +63,6 @@ private:
      */
     void requestCells(FrameContext& frame, int cells, int cellVoxels, bool fewNew);
 
-    gl::Program m_gather[2]; ///< [0] box-filtered mips, [1] anisotropic
-    gl::Program m_request[2]; ///< [1]: LIST_NEW
-    gl::Program m_listRequested[2]; ///< [1]: FROM_LIST
     gl::Framebuffer m_requestTarget; ///< no attachments, the traced pixels' size
     int m_requestWidth = 0, m_requestHeight = 0;
     gl::VertexArray m_emptyVao;

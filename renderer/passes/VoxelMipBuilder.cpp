@@ -11,22 +11,22 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
     const std::vector<const OccupiedCellList*>& occupied)
 {
     if (!m_listParents)
-        m_listParents = shaders.build({ "list parent cells", { "mipmap/ListParents.comp" }, {} });
+        m_listParents = &shaders.program({ "list parent cells", { "mipmap/ListParents.comp" }, {} });
     const int size = std::max(1, resolution / 2);
     if (!m_listed || m_listed.width() != size)
         m_listed = gl::Texture::create3D(GL_R32UI, size);
     const GLuint none = 0;
     glClearTexImage(m_listed.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     m_levelCells.resize(std::size_t(std::max(levels - 1, 0)));
-    m_listParents.use();
-    m_listParents.set("uGroupSize", OccupiedCellList::kGroupSize);
+    m_listParents->use();
+    m_listParents->set("uGroupSize", OccupiedCellList::kGroupSize);
     m_listed.bindImage(0, 0, GL_READ_WRITE);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     for (std::size_t k = 0; k < m_levelCells.size(); ++k) {
         // Level k + 1's cells: the parents of the listed voxels, or of level k's cells.
         const std::size_t side = std::size_t(std::max(1, size >> k));
         m_levelCells[k].reset(side * side * side, 2);
-        m_listParents.set("uLevelBit", 1u << unsigned(k));
+        m_listParents->set("uLevelBit", 1u << unsigned(k));
         if (k == 0) {
             for (const OccupiedCellList* voxels : occupied)
                 voxels->dispatchOverCells(); // read at storage buffers 0 and 1, appended at 2 and 3
@@ -41,14 +41,14 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
 void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume)
 {
     if (!m_boxProgram)
-        m_boxProgram = shaders.build({ "downsample", { "mipmap/Downsample.comp" }, {} });
-    m_boxProgram.use();
+        m_boxProgram = &shaders.program({ "downsample", { "mipmap/Downsample.comp" }, {} });
+    m_boxProgram->use();
     volume.bindUnit(0);
     const int levels = std::min(volume.levels(), int(m_levelCells.size()) + 1);
     for (int level = 1; level < levels; ++level) {
         glClearTexImage(volume.id(), level, GL_RGBA, GL_FLOAT, nullptr);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-        m_boxProgram.set("uSourceLevel", level - 1);
+        m_boxProgram->set("uSourceLevel", level - 1);
         volume.bindImage(0, level, GL_WRITE_ONLY);
         m_levelCells[std::size_t(level - 1)].dispatchOverCells();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -60,8 +60,8 @@ void VoxelMipBuilder::buildDirectional(
 {
     if (!m_directionalProgram) {
         m_directionalProgram
-            = shaders.build({ "directional downsample", { "mipmap/DownsampleDirectional.comp" }, {} });
-        m_allDirectionsProgram = shaders.build(
+            = &shaders.program({ "directional downsample", { "mipmap/DownsampleDirectional.comp" }, {} });
+        m_allDirectionsProgram = &shaders.program(
             { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
     }
     const int levels = std::min(source.levels() - 1, int(m_levelCells.size()));
@@ -76,7 +76,7 @@ void VoxelMipBuilder::buildDirectional(
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         // Level 1 of every chain from the isotropic level 0, in one pass over its shared children; later
         // levels of all six chains at once, each tile from the same tile one level finer.
-        const gl::Program& filter = level == 0 ? m_allDirectionsProgram : m_directionalProgram;
+        const gl::Program& filter = level == 0 ? *m_allDirectionsProgram : *m_directionalProgram;
         filter.use();
         if (level == 0) {
             source.bindUnit(0);

@@ -38,10 +38,10 @@ public:
         const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
 
 private:
-    gl::Program m_boxProgram;
-    gl::Program m_directionalProgram;
-    gl::Program m_allDirectionsProgram;
-    gl::Program m_listParents;
+    const gl::Program* m_boxProgram = nullptr;
+    const gl::Program* m_directionalProgram = nullptr;
+    const gl::Program* m_allDirectionsProgram = nullptr;
+    const gl::Program* m_listParents = nullptr;
     gl::Texture
         m_listed; ///< r32ui over the cells of level 1: bit k set where the cell of level k + 1 is listed
     std::vector<OccupiedCellList> m_levelCells; ///< [k]: the listed cells of grid level k + 1

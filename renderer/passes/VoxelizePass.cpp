@@ -33,9 +33,9 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     if (!m_voxelize) {
         const std::vector<std::string> stages { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom",
             "voxelize/Voxelize.frag" };
-        m_voxelize = frame.shaders.build({ "voxelize", stages, {} });
-        m_voxelizeEmissive = frame.shaders.build({ "voxelize (emissive)", stages, { "EMISSIVE" } });
-        m_resolve = frame.shaders.build({ "voxel resolve", { "voxelize/Resolve.comp" }, {} });
+        m_voxelize = &frame.shaders.program({ "voxelize", stages, {} });
+        m_voxelizeEmissive = &frame.shaders.program({ "voxelize (emissive)", stages, { "EMISSIVE" } });
+        m_resolve = &frame.shaders.program({ "voxel resolve", { "voxelize/Resolve.comp" }, {} });
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -82,7 +82,7 @@ void VoxelizePass::accumulate(
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
     const MeshFilter layer = dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static;
     for (const bool emissive : { false, true }) {
-        gl::Program& program = emissive ? m_voxelizeEmissive : m_voxelize;
+        const gl::Program& program = emissive ? *m_voxelizeEmissive : *m_voxelize;
         program.use();
         program.set("uGridOrigin", v.frame.origin);
         program.set("uGridExtent", v.frame.extent);
@@ -128,8 +128,8 @@ void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStati
     v.accumulators.bindImage(0, 0, GL_READ_WRITE);
     for (int i = 0; i < 3; ++i)
         outputs[i]->bindImage(GLuint(1 + i), 0, GL_WRITE_ONLY);
-    m_resolve.use();
-    m_resolve.set("uResolution", v.frame.resolution);
+    m_resolve->use();
+    m_resolve->set("uResolution", v.frame.resolution);
     touched.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }

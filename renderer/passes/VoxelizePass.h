@@ -31,9 +31,10 @@ private:
     void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
         const OccupiedCellList& touched);
 
-    gl::Program m_voxelize;
-    gl::Program m_voxelizeEmissive; ///< the EMISSIVE variant, for meshes whose material emits
-    gl::Program m_resolve;
+    const gl::Program* m_voxelize = nullptr;
+    const gl::Program* m_voxelizeEmissive
+        = nullptr; ///< the EMISSIVE variant, for meshes whose material emits
+    const gl::Program* m_resolve = nullptr;
     OccupiedCellList m_editedVoxels; ///< the static voxels a material edit redid
     gl::Framebuffer m_framebuffer;
     std::uint64_t m_staticGeometry = 0;

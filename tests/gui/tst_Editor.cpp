@@ -23,6 +23,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QUndoStack>
 #include <QtTest>
@@ -51,6 +52,7 @@ private slots:
     void badFilesLeaveTheDocumentAlone();
     void recoveredWorkIsUntitledAndSurvivesUntilSaved();
     void nonFiniteOverlayReportsEveryTarget();
+    void f5ReloadsShadersAndSaysWhatFailed();
 
 private:
     bool waitForFrame();
@@ -380,6 +382,34 @@ void EditorTest::nonFiniteOverlayReportsEveryTarget()
     QVERIFY2(overlay->text().contains(QStringLiteral("none in")), qPrintable(overlay->text()));
     action->setChecked(false);
     QVERIFY(!overlay->isVisible());
+}
+
+// Render > Reload shaders (F5) reads $VCT_SHADER_DIR: a shader that no longer compiles is named in the status
+// bar and the view keeps drawing with its last good version; fixed, it reloads.
+void EditorTest::f5ReloadsShadersAndSaysWhatFailed()
+{
+    QAction* action = m_window->findChild<QAction*>(QStringLiteral("reloadShadersAction"));
+    QVERIFY(action);
+    QCOMPARE(action->shortcut(), QKeySequence(Qt::Key_F5));
+    QVERIFY(waitForFrame());
+    const QString dir = test::outputDir() + QStringLiteral("/editor-shader-reload");
+    QDir(dir).removeRecursively();
+    test::writeFile(dir + QStringLiteral("/present/Present.frag"), "#error deliberately broken\n");
+    qputenv("VCT_SHADER_DIR", dir.toUtf8());
+    action->trigger();
+    const QString failed = m_window->statusBar()->currentMessage();
+    QVERIFY2(failed.contains(QStringLiteral("kept their last good version"))
+            && failed.contains(QStringLiteral("Present.frag")),
+        qPrintable(failed));
+    QVERIFY(waitForFrame());
+    QVERIFY(m_window->viewport()->lastError().isEmpty());
+
+    qputenv("VCT_SHADER_DIR", (test::sourceDir() + QStringLiteral("/shaders")).toUtf8());
+    action->trigger();
+    qunsetenv("VCT_SHADER_DIR");
+    const QString reloaded = m_window->statusBar()->currentMessage();
+    QVERIFY2(reloaded.startsWith(QStringLiteral("Shaders reloaded")), qPrintable(reloaded));
+    QVERIFY(waitForFrame());
 }
 
 #include "tst_Editor.moc"
