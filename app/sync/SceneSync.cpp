@@ -47,7 +47,7 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
     const doc::DocumentState& state = m_document->state();
     if (m_needsReset || fullRebuild) {
         renderer.setSettings(state.settings);
-        renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+        rebuildScene(renderer);
         m_needsReset = false;
         m_pending.clear();
         return;
@@ -69,8 +69,11 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
             nodes.push_back(event.index);
             break;
         case Kind::NodeProperty:
-            // The dynamic flag decides which voxel layer a mesh lives in: rebuild the scene.
-            renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+            // The dynamic flag decides which voxel layer a mesh lives in: rebuild the scene. A rename
+            // changes nothing the renderer has.
+            if (event.index < 0 || std::size_t(event.index) >= m_nodeDynamic.size()
+                || m_nodeDynamic[std::size_t(event.index)] != state.nodes[std::size_t(event.index)].dynamic)
+                rebuildScene(renderer);
             break;
         default:
             break;
@@ -88,6 +91,14 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
         for (std::size_t mesh = 0; mesh < m_meshToNode.size(); ++mesh)
             if (m_meshToNode[mesh] == node)
                 renderer.setMeshTransform(mesh, m_document->nodeWorldTransform(node));
+}
+
+void SceneSync::rebuildScene(render::Renderer& renderer)
+{
+    renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+    m_nodeDynamic.clear();
+    for (const doc::SceneNode& node : m_document->state().nodes)
+        m_nodeDynamic.push_back(node.dynamic);
 }
 
 } // namespace vct::sync

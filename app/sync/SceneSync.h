@@ -33,10 +33,12 @@ public:
 
 private:
     void onChanged(const doc::ChangeEvent& event);
+    void rebuildScene(render::Renderer& renderer);
     doc::Document* m_document;
     std::vector<doc::ChangeEvent> m_pending;
     bool m_needsReset = true;
     std::vector<int> m_meshToNode;
+    std::vector<bool> m_nodeDynamic; ///< each node's dynamic flag as the renderer's scene has it
 };
 
 } // namespace vct::sync

@@ -291,6 +291,9 @@ void Renderer::setLights(const std::vector<PointLight>& points,
     const std::vector<DirectionalLight>& directionals, const std::vector<SurfaceLight>& surfaces)
 {
     const Scene& old = m_state->scene->scene();
+    // The document sends its lights whole after any light edit: renaming one changes nothing drawn.
+    if (points == old.pointLights && directionals == old.directionalLights && surfaces == old.surfaceLights)
+        return;
     // A change of colour or intensity alone keeps the shadow maps.
     bool placementChanged
         = points.size() != old.pointLights.size() || directionals.size() != old.directionalLights.size();

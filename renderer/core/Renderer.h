@@ -47,6 +47,7 @@ public:
     /** Moves one mesh. Moving a dynamic mesh re-voxelizes dynamic meshes only. */
     void setMeshTransform(std::size_t mesh, const glm::mat4& transform);
     void setMaterial(std::size_t index, const Material& material);
+    /** Replaces the lights; lights equal to the current ones (a renamed light) change nothing. */
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals,
         const std::vector<SurfaceLight>& surfaces);
 

@@ -12,6 +12,8 @@ struct DirectionalLight {
     /// Degrees: the disk the light comes from (the sun's is about 0.53), which softens its shadows; the
     /// irradiance stays the same. 0 is a hard shadow filtered to the shadow map's texel.
     float angularDiameterDeg = 0.0f;
+
+    bool operator==(const DirectionalLight& other) const = default;
 };
 
 } // namespace vct::render

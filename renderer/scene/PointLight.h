@@ -27,6 +27,7 @@ struct PointLight {
     /// the point's (I/d^2), exact while the receiver is a few radii away.
     float radius = 0.0f;
 
+    bool operator==(const PointLight& other) const = default;
     bool isSpot() const { return spotOuterDeg < 180.0f; }
     float cosOuter() const { return isSpot() ? std::cos(glm::radians(spotOuterDeg)) : -2.0f; }
     float cosInner() const

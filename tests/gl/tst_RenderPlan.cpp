@@ -1,8 +1,10 @@
 #include "GlTestContext.h"
 #include "TestSupport.h"
 
+#include "document/Document.h"
 #include "document/SceneLoader.h"
 #include "imageio/ImageMetrics.h"
+#include "sync/SceneSync.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -34,6 +36,7 @@ private slots:
     void bouncesConvergeAcrossFrames();
     void irradianceCacheFollowsTheLight();
     void timesCanComeFromThePreviousFrame();
+    void renamesChangeNothingTheRendererHas();
 
 private:
     render::FrameStats planned();
@@ -471,6 +474,56 @@ void RenderPlanTest::timesCanComeFromThePreviousFrame()
     QVERIFY(!exact.timesFromPreviousFrame);
     for (const render::PassStats& p : exact.passes)
         QVERIFY2((p.gpuMs > 0.0) == (p.action == "run"), p.name.c_str());
+}
+
+// Through the editor's path (document, change events, SceneSync): renaming a node or a light reruns no pass
+// an unchanged frame would not. They used to re-upload and re-voxelize the scene, and re-inject and re-gather
+// every light.
+void RenderPlanTest::renamesChangeNothingTheRendererHas()
+{
+    doc::Document document;
+    QString error;
+    QVERIFY2(document.newFromScene(QStringLiteral("builtin:cornell_point"), &error), qPrintable(error));
+    render::RenderSettings settings = document.state().settings;
+    settings.voxelResolution = 32;
+    settings.shadowMapSize = 256;
+    document.setSettings(settings);
+    QVERIFY(!document.state().nodes.empty() && !document.state().lights.empty());
+    sync::SceneSync sceneSync(&document);
+    sceneSync.apply(*m_gl.renderer, true);
+    m_camera = document.state().camera;
+    planned();
+    sceneSync.apply(*m_gl.renderer);
+    planned();
+    std::vector<std::pair<std::string, std::string>> unchanged;
+    for (const render::PassStats& p : m_last.passes)
+        unchanged.emplace_back(p.name, p.action);
+    QVERIFY2(pass("voxelize").action == "reused", "an unchanged frame reuses the voxels");
+
+    const auto expectUnchanged = [&](const char* what) {
+        QVERIFY(sceneSync.hasPendingChanges());
+        sceneSync.apply(*m_gl.renderer);
+        planned();
+        for (const auto& [name, action] : unchanged)
+            QVERIFY2(pass(name).action == action,
+                qPrintable(QString("%1: %2 %3 (%4), as unchanged %5")
+                               .arg(what, name.c_str(), pass(name).action.c_str(), pass(name).reason.c_str(),
+                                   action.c_str())));
+        expectSameAsForced(what);
+    };
+    document.setNodeName(0, QStringLiteral("renamed node"));
+    expectUnchanged("node renamed");
+    doc::LightNode light = document.state().lights.front();
+    light.name = QStringLiteral("renamed light");
+    document.setLight(0, light, doc::LightField::Name);
+    expectUnchanged("light renamed");
+
+    // The dynamic flag is a property too, and does change the voxel layers.
+    document.setNodeDynamic(0, !document.state().nodes.front().dynamic);
+    sceneSync.apply(*m_gl.renderer);
+    planned();
+    expectAction("voxelize", "run");
+    expectSameAsForced("dynamic flag");
 }
 
 QTEST_GUILESS_MAIN(RenderPlanTest)
