@@ -544,6 +544,21 @@ glm::mat4 Document::nodeWorldTransform(int node) const
     return n.transform.matrix() * imported;
 }
 
+render::Aabb Document::nodeWorldBounds(int node) const
+{
+    render::Aabb bounds;
+    if (node < 0 || std::size_t(node) >= m_state.nodes.size())
+        return bounds;
+    const SceneNode& n = m_state.nodes[std::size_t(node)];
+    const render::Scene& source = sourceScene(n.source);
+    if (n.mesh < 0 || std::size_t(n.mesh) >= source.meshes.size())
+        return bounds;
+    const glm::mat4 world = nodeWorldTransform(node);
+    for (const glm::vec3& p : source.meshes[std::size_t(n.mesh)].positions)
+        bounds.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    return bounds;
+}
+
 const render::Scene& Document::sourceScene(int source) const
 {
     static const render::Scene kEmpty;

@@ -127,6 +127,8 @@ public:
     render::Scene buildRenderScene(std::vector<int>* meshToNode = nullptr) const;
     /** World transform of a node's mesh (node transform times the imported one). */
     glm::mat4 nodeWorldTransform(int node) const;
+    /** World-space bounds of a node's mesh, metres; empty for a node without geometry. */
+    render::Aabb nodeWorldBounds(int node) const;
     /** The imported geometry of a source (cached when the source was loaded). */
     const render::Scene& sourceScene(int source) const;
 

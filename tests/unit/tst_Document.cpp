@@ -677,6 +677,12 @@ private slots:
         QCOMPARE(doc.buildRenderScene().triangleCount(),
             doc.sourceScene(0).triangleCount()
                 + doc.sourceScene(0).meshes[std::size_t(copy.mesh)].triangleCount());
+        // The copy stands beside the original, not inside it: their boxes do not overlap along x.
+        const vct::render::Aabb original = doc.nodeWorldBounds(3), duplicate = doc.nodeWorldBounds(4);
+        QVERIFY(!original.isEmpty());
+        QVERIFY2(duplicate.min.x > original.max.x,
+            qPrintable(QStringLiteral("%1 > %2").arg(duplicate.min.x).arg(original.max.x)));
+        QCOMPARE(duplicate.min.y, original.min.y);
         doc.undoStack()->undo();
         QCOMPARE(doc.selectedNode(), 3);
         QVERIFY(sameDocument(before, doc.state()));

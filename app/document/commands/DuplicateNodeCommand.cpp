@@ -13,6 +13,13 @@ DuplicateNodeCommand::DuplicateNodeCommand(Document* document, int node)
     , m_nextIdBefore(document->state().nextId)
 {
     m_copy.id = m_nextIdBefore;
+    // Beside the original, a tenth of its width apart, rather than inside it where it cannot be seen or
+    // picked: its own width along x, or its largest extent when it is flat across x.
+    if (const render::Aabb bounds = document->nodeWorldBounds(node); !bounds.isEmpty()) {
+        const glm::vec3 size = bounds.size();
+        const float width = size.x > 0.0f ? size.x : std::max({ size.x, size.y, size.z });
+        m_copy.transform.translation.x += 1.1f * width;
+    }
     m_copy.name = QCoreApplication::translate("DuplicateNodeCommand", "%1 copy").arg(m_copy.name);
     setText(QCoreApplication::translate("DuplicateNodeCommand", "Duplicate %1")
                 .arg(document->state().nodes.at(std::size_t(node)).name));
