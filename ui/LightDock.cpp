@@ -4,6 +4,7 @@
 #include "SceneTreeModel.h"
 
 #include "document/Document.h"
+#include "document/NewLight.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -66,32 +67,6 @@ QDoubleSpinBox* makeLengthSpin(const QString& objectName, const QString& tip)
     spin->setSuffix(QStringLiteral(" m"));
     spin->setToolTip(tip);
     return spin;
-}
-
-/**
- * A new rect or disk light: a quarter of the scene's narrower horizontal extent across (at most 1 m), above
- * the middle of the scene and just under its top, facing down. Under the top, as a ceiling light, because a
- * closed room's ceiling would shadow a light above it.
- */
-doc::LightNode newSurfaceLight(doc::LightType type, const render::Aabb& bounds, const glm::vec3& lookAt)
-{
-    doc::LightNode light;
-    light.type = type;
-    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    light.intensity = 10.0f;
-    if (bounds.isEmpty()) {
-        light.position = lookAt + glm::vec3(0.0f, 1.0f, 0.0f);
-        return light;
-    }
-    const glm::vec3 extent = bounds.size();
-    const float horizontal = std::min(extent.x, extent.z);
-    const float across = horizontal > 0.0f ? horizontal : std::max({ extent.x, extent.y, extent.z });
-    const float side = across > 0.0f ? std::min(1.0f, 0.25f * across) : 1.0f;
-    light.areaWidth = side;
-    light.areaHeight = side;
-    const glm::vec3 centre = bounds.center();
-    light.position = { centre.x, bounds.max.y - std::min(1.0f, 0.05f * extent.y), centre.z };
-    return light;
 }
 
 void setSpinValue(QDoubleSpinBox* spin, double value)
@@ -417,21 +392,8 @@ void LightDock::addLight(doc::LightType type)
     if (!m_document)
         return;
     // The name stays empty: the document numbers new lights per type.
-    doc::LightNode light;
-    if (type == doc::LightType::Rect || type == doc::LightType::Disk) {
-        light = newSurfaceLight(
-            type, m_document->buildRenderScene().bounds(), m_document->state().camera.lookAt);
-    } else if (type == doc::LightType::Directional) {
-        light.type = doc::LightType::Directional;
-        light.direction = glm::vec3(-0.3f, -1.0f, -0.2f);
-        light.intensity = 1.0f;
-    } else {
-        light.type = type;
-        // Where the user is looking is inside the scene more often than any fixed point.
-        light.position = m_document->state().camera.lookAt;
-        light.intensity = 1.0f;
-    }
-    m_document->addLight(light);
+    m_document->addLight(doc::NewLight::make(type, m_document->buildRenderScene().bounds(),
+        m_document->state().camera.lookAt, m_document->state().lights));
     setCurrentLight(int(m_document->state().lights.size()) - 1);
 }
 
@@ -485,6 +447,11 @@ void LightDock::loadLight()
     m_addRect->setEnabled(m_document);
     m_addDisk->setEnabled(m_document);
     if (!valid) {
+        // Without a light the fields must not keep showing the last scene's.
+        const QSignalBlocker blockName(m_name), blockIntensity(m_intensity), blockColor(m_color);
+        m_name->clear();
+        m_intensity->setValue(0.0);
+        m_color->setColor(glm::vec3(0.0f));
         for (QWidget* w :
             std::initializer_list<QWidget*> { m_directionLabel, m_directionRow, m_spotLabel, m_spotRow,
                 m_radiusLabel, m_radius, m_angularDiameterLabel, m_angularDiameter, m_areaWidthLabel,

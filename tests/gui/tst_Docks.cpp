@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QLineEdit>
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeView>
@@ -407,6 +408,14 @@ void TstDocks::lightDockAddAndUndo()
     QCOMPARE(int(document->state().lights.size()), lights);
     document->undoStack()->undo();
     QCOMPARE(int(document->state().lights.size()), lights + 1);
+
+    // With no light left, the panel shows none: not the last light's name and values.
+    while (!document->state().lights.empty())
+        document->removeLight(0);
+    QCOMPARE(dock.currentLight(), -1);
+    QVERIFY(child<QLineEdit>(&dock, "lightName")->text().isEmpty());
+    QCOMPARE(intensity->value(), 0.0);
+    QVERIFY(!intensity->isEnabled());
 }
 
 void TstDocks::lightDockRectAndDiskShowTheirSize()

@@ -198,7 +198,8 @@ void UndoStepsTest::intensityThenXUndoesOnlyX()
 
     action("undoAction")->trigger();
     QVERIFY(current() == added);
-    QCOMPARE(intensity->value(), double(added.intensity));
+    // The box shows three decimals of the float the document holds.
+    QVERIFY(std::abs(intensity->value() - double(added.intensity)) < 1e-3);
 }
 
 void UndoStepsTest::undoKeysWorkWithFocusInASpinBox()
@@ -216,7 +217,7 @@ void UndoStepsTest::undoKeysWorkWithFocusInASpinBox()
     // Ctrl+Z in the spin box undoes the document's edit, not the box's text, and the box keeps the focus.
     QTest::keyClick(intensity, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(current(), before);
-    QCOMPARE(intensity->value(), double(before));
+    QVERIFY(std::abs(intensity->value() - double(before)) < 1e-3);
     QVERIFY(intensity->hasFocus());
 
     // Ctrl+Y redoes it, as Ctrl+Shift+Z does.
