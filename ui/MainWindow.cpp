@@ -298,6 +298,8 @@ void MainWindow::openInitial(const QString& specOrProject, float unitScale)
     if (!ok) {
         showError(tr("Open"), error);
         m_document->newFromScene(QStringLiteral("builtin:default"), &error);
+    } else if (!m_document->openNote().isEmpty()) {
+        statusBar()->showMessage(m_document->openNote(), 15000);
     }
 }
 

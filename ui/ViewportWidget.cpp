@@ -189,8 +189,7 @@ QStringList ViewportWidget::reloadShaders(const QString& folder)
     if (!m_renderer)
         return {};
     makeCurrent();
-    const std::vector<std::string> failures
-        = m_renderer->reloadShaders(folder.toStdString());
+    const std::vector<std::string> failures = m_renderer->reloadShaders(folder.toStdString());
     doneCurrent();
     update();
     QStringList result;
@@ -472,6 +471,11 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
             m_flyKeys.insert(event->key());
             if (!m_flyTimer.isActive()) {
                 beginGesture();
+                // A quarter of the geometry's diagonal per second: the room is crossed in a few seconds
+                // whatever its unit. Measured once per flight, not per step (the bounds read every vertex).
+                const render::Aabb bounds = m_document->sceneBounds();
+                const float diagonal = bounds.isEmpty() ? 0.0f : glm::length(bounds.size());
+                m_flySpeed = 0.25f * (diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f);
                 m_flyClock.start();
                 m_flyTimer.start();
             }
@@ -506,11 +510,7 @@ void ViewportWidget::focusOutEvent(QFocusEvent* event)
 void ViewportWidget::flyStep()
 {
     const float seconds = float(m_flyClock.restart()) * 1e-3f;
-    // Speed scales with the scene: cross a tenth of its size per second.
-    render::Aabb bounds;
-    for (std::size_t i = 0; i < m_document->state().nodes.size(); ++i)
-        bounds.extend(glm::vec3(m_document->nodeWorldTransform(int(i))[3]));
-    const float speed = std::max(1.0f, glm::length(bounds.size())) * 0.25f * seconds;
+    const float speed = m_flySpeed * seconds;
     float forward = 0, right = 0, up = 0;
     forward += m_flyKeys.contains(Qt::Key_W) ? speed : 0.0f;
     forward -= m_flyKeys.contains(Qt::Key_S) ? speed : 0.0f;

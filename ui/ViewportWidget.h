@@ -148,6 +148,7 @@ private:
     QTimer m_refineTimer;
     QTimer m_flyTimer;
     QElapsedTimer m_flyClock;
+    float m_flySpeed = 1.0f; ///< metres per second of the flight under way
     QSet<int> m_flyKeys;
     QPoint m_lastMouse;
     QPoint m_pressPosition;

@@ -1,5 +1,7 @@
 #include "Document.h"
 
+#include "Enclosure.h"
+#include "NewLight.h"
 #include "ProjectFile.h"
 #include "SceneLoader.h"
 #include "commands/AddLightCommand.h"
@@ -200,6 +202,23 @@ bool Document::newFromScene(const QString& spec, QString* error, float unitScale
     state.materials = scene.materials;
     state.lights = lightsFromScene(scene, {}, &state.nextId);
     state.camera = scene.camera;
+    m_openNote.clear();
+    // A model that brings no light would open black: give it one and say so. Under a roof a sun would not
+    // reach the camera, so there it is a point light where the camera looks.
+    if (!source.spec.startsWith(QStringLiteral("builtin:")) && state.lights.empty()
+        && !scene.hasEmissiveMaterial()) {
+        const bool inside = Enclosure::encloses(scene, scene.camera.position)
+            && Enclosure::roofed(scene, scene.camera.position);
+        LightNode light = NewLight::make(
+            inside ? LightType::Point : LightType::Directional, scene.bounds(), scene.camera.lookAt, {});
+        light.id = state.nextId++;
+        light.name = QStringLiteral("%1 light 1").arg(lightKindName(light.type));
+        state.lights.push_back(light);
+        m_openNote = inside
+            ? QStringLiteral(
+                "The model brings no light: added a point light where the camera looks (Light panel)")
+            : QStringLiteral("The model brings no light: added a directional light, a sun (Light panel)");
+    }
 
     m_undoStack.clear();
     m_state = std::move(state);
@@ -556,6 +575,15 @@ render::Aabb Document::nodeWorldBounds(int node) const
     const glm::mat4 world = nodeWorldTransform(node);
     for (const glm::vec3& p : source.meshes[std::size_t(n.mesh)].positions)
         bounds.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    return bounds;
+}
+
+render::Aabb Document::sceneBounds() const
+{
+    render::Aabb bounds;
+    for (std::size_t i = 0; i < m_state.nodes.size(); ++i)
+        if (m_state.nodes[i].visible)
+            bounds.extend(nodeWorldBounds(int(i)));
     return bounds;
 }
 

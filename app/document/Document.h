@@ -68,6 +68,9 @@ public:
     bool addImportedModel(const QString& path, render::Scene loaded, float unitScale = 1.0f);
 
     QString filePath() const { return m_filePath; }
+    /** What the last newFromScene() added on its own (a light for a model that brought none), for the status
+     * bar; empty when nothing. */
+    QString openNote() const { return m_openNote; }
     bool isModified() const { return !m_undoStack.isClean(); }
 
     // Edits: each pushes one undo command.
@@ -129,6 +132,8 @@ public:
     glm::mat4 nodeWorldTransform(int node) const;
     /** World-space bounds of a node's mesh, metres; empty for a node without geometry. */
     render::Aabb nodeWorldBounds(int node) const;
+    /** World-space bounds of every visible node's geometry, metres. */
+    render::Aabb sceneBounds() const;
     /** The imported geometry of a source (cached when the source was loaded). */
     const render::Scene& sourceScene(int source) const;
 
@@ -151,6 +156,7 @@ private:
     QString m_modelRoot;
     QUndoStack m_undoStack;
     QString m_filePath;
+    QString m_openNote;
     render::Camera m_savedCamera;
     int m_selectedNode = -1;
     quint64 m_editGesture = 0;

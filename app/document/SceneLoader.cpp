@@ -2,6 +2,7 @@
 
 #include "BuiltinScenes.h"
 #include "CameraFile.h"
+#include "Enclosure.h"
 #include "LightsFile.h"
 #include "ModelImporter.h"
 #include "SceneRebase.h"
@@ -100,7 +101,7 @@ bool SceneLoader::load(const QString& spec, render::Scene& scene, QString* error
             localInfo.height = setup.height;
             localInfo.files << cameraPath;
         } else {
-            result.camera = frameBounds(result.bounds());
+            result.camera = frameScene(result);
         }
         if (unitScale != 1.0f) {
             result = scaledScene(std::move(result), unitScale);
@@ -160,6 +161,23 @@ QString SceneLoader::parseUnitScale(const QString& text, float* unitScale)
         return problem;
     *unitScale = value;
     return {};
+}
+
+render::Camera SceneLoader::frameScene(const render::Scene& scene)
+{
+    const render::Aabb bounds = scene.bounds();
+    if (bounds.isEmpty() || !Enclosure::encloses(scene, bounds.center()))
+        return frameBounds(bounds);
+    // Inside a closed room: at its centre, looking along its longer horizontal side.
+    render::Camera camera;
+    camera.fovYDeg = kFramingFovYDeg;
+    const glm::vec3 size = bounds.size();
+    const glm::vec3 along = size.x >= size.z ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f);
+    camera.position = bounds.center();
+    camera.lookAt = camera.position + 0.25f * std::max(size.x, size.z) * along;
+    camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.nearPlane = nearPlaneFor(bounds);
+    return camera;
 }
 
 render::Camera SceneLoader::frameBounds(const render::Aabb& bounds, float fovYDeg)

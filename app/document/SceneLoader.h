@@ -14,7 +14,7 @@ namespace vct::doc {
  *
  * Next to a model file `DIR/STEM.EXT`, the optional siblings `DIR/STEM.lights.json` (LightsFile) and
  * `DIR/STEM.camera.json` (CameraFile) are loaded too, as tests/data/reference lays its scenes out. Without a
- * camera file the camera frames the bounds (frameBounds()).
+ * camera file the camera frames the scene (frameScene()).
  *
  * A model file may be in any unit: `unitScale` is metres per model unit (0.01 for centimetres). The siblings
  * are in the model's units too, so the whole loaded scene is scaled (scaledScene()). Built-in scenes are in
@@ -56,6 +56,12 @@ public:
      * fits a vertical field of view of `fovYDeg` degrees (and the horizontal one for aspect ratios >= 1).
      */
     static render::Camera frameBounds(const render::Aabb& bounds, float fovYDeg = kFramingFovYDeg);
+    /**
+     * The camera for a model that came without one: frameBounds() of its bounds, unless their centre is
+     * inside a closed room (Enclosure), which from outside would show only its outer wall: then at that
+     * centre, looking along the longer horizontal side.
+     */
+    static render::Camera frameScene(const render::Scene& scene);
     /**
      * The near plane for a camera that came without one (camera files have none): a thousandth of the
      * scene's diagonal, so that a scene in any unit stays beyond it. The default of 0.01 m swallowed a

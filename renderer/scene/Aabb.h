@@ -27,6 +27,11 @@ struct Aabb {
     }
     glm::vec3 size() const { return isEmpty() ? glm::vec3(0.0f) : max - min; }
     glm::vec3 center() const { return (min + max) * 0.5f; }
+    /** Whether @p p lies in the box, faces included. */
+    bool contains(const glm::vec3& p) const
+    {
+        return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y && p.z <= max.z;
+    }
     /** The same box moved by @p offset (empty stays empty). */
     Aabb translated(const glm::vec3& offset) const
     {

@@ -211,7 +211,14 @@ private slots:
         Document imported;
         QVERIFY2(imported.newFromScene(red, &error), qPrintable(error));
         QVERIFY2(imported.importModel(blue, &error), qPrintable(error));
-        QCOMPARE(whole.state().nodes, imported.state().nodes);
+        // Ids aside: opening a model that brings no light adds one, which takes an id the project does not.
+        const auto withoutIds = [](std::vector<doc::SceneNode> nodes) {
+            for (doc::SceneNode& node : nodes)
+                node.id = 0;
+            return nodes;
+        };
+        QCOMPARE(withoutIds(whole.state().nodes), withoutIds(imported.state().nodes));
+        QCOMPARE(imported.state().lights.size(), std::size_t(1));
         QCOMPARE(whole.state().materials.size(), std::size_t(2));
         QVERIFY(std::equal(whole.state().materials.begin(), whole.state().materials.end(),
             imported.state().materials.begin(), imported.state().materials.end(), doc::sameMaterial));
