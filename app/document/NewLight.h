@@ -19,8 +19,9 @@ public:
     /**
      * A new light of `type` for a scene with these bounds, lights and a camera looking at `lookAt`. Points
      * and spots stand at `lookAt`, a directional light slants down, rects and disks hang under the top of the
-     * scene facing down. Its strength, to two significant digits, gives, a quarter of the scene's diagonal away, the mean irradiance the
-     * existing lights give at `lookAt` (π W/m² without any, which a white wall shows as radiance 1).
+     * scene facing down. Its strength, to two significant digits, gives, a quarter of the scene's diagonal
+     * away, the mean irradiance the existing lights give at `lookAt` (π W/m² without any, which a white wall
+     * shows as radiance 1).
      */
     static LightNode make(LightType type, const render::Aabb& bounds, const glm::vec3& lookAt,
         const std::vector<LightNode>& existing);

@@ -64,8 +64,8 @@ public:
     static bool load(const QString& path, DocumentState* state, QString* error,
         const QString& modelRoot = QString(), WholeSources* wholeSources = nullptr);
     /**
-     * Writes `state` to `path` atomically (files::AtomicFile): on failure returns false, any old file there is left
-     * byte-identical, and `error` names the file and the reason. Model paths are written relative to
+     * Writes `state` to `path` atomically (files::AtomicFile): on failure returns false, any old file there
+     * is left byte-identical, and `error` names the file and the reason. Model paths are written relative to
      * `modelRoot`, or to the project's folder when it is empty, so that load() with the same root finds them.
      */
     static bool save(const QString& path, const DocumentState& state, QString* error,

@@ -16,9 +16,9 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QLineEdit>
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeView>
