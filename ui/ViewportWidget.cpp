@@ -2,6 +2,7 @@
 
 #include "CameraController.h"
 #include "NonFiniteOverlay.h"
+#include "ViewportOverlay.h"
 
 #include "core/Renderer.h"
 #include "document/Document.h"
@@ -40,6 +41,7 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
     , m_document(document)
     , m_sync(std::make_unique<sync::SceneSync>(document))
     , m_nonFiniteOverlay(new NonFiniteOverlay(this))
+    , m_overlay(new ViewportOverlay(this, document))
 {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
@@ -50,6 +52,7 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
         m_interactive = false;
         update();
     });
+    connect(document, &doc::Document::selectionChanged, m_overlay, qOverload<>(&QWidget::update));
     m_flyTimer.setInterval(30);
     connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
     m_wheelGestureTimer.setSingleShot(true);
@@ -156,6 +159,8 @@ void ViewportWidget::paintGL()
                 Qt::QueuedConnection);
         }
         emit frameRendered(stats);
+        m_overlay->showFrame(
+            stats, m_interactive, m_inspector.enabled ? QRect(0, 0, width() / 2, height()) : rect());
         if (!stats.lightConverged)
             QTimer::singleShot(0, this, [this] { update(); });
     } catch (const std::exception& e) {
@@ -505,6 +510,12 @@ void ViewportWidget::focusOutEvent(QFocusEvent* event)
     m_flyTimer.stop();
     endGestureIfIdle();
     QOpenGLWidget::focusOutEvent(event);
+}
+
+void ViewportWidget::resizeEvent(QResizeEvent* event)
+{
+    QOpenGLWidget::resizeEvent(event);
+    m_overlay->setGeometry(rect());
 }
 
 void ViewportWidget::flyStep()

@@ -30,6 +30,7 @@ class SceneSync;
 namespace vct::ui {
 
 class NonFiniteOverlay;
+class ViewportOverlay;
 
 /**
  * The 3D view: hosts the renderer in a QOpenGLWidget, navigates the camera (the left button orbits about the
@@ -69,6 +70,8 @@ public:
     void setNonFiniteCheck(bool enabled);
     bool nonFiniteCheck() const { return m_nonFiniteCheck; }
     const NonFiniteOverlay* nonFiniteOverlay() const { return m_nonFiniteOverlay; }
+    /** Selection box, light icons and the last frame's figures, over the image. */
+    const ViewportOverlay* overlay() const { return m_overlay; }
     /**
      * The keys and mouse gestures the view handles itself rather than through a QAction, as (keys, what they
      * do): Help > Keyboard shortcuts lists them beside the actions' shortcuts.
@@ -110,6 +113,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void releaseGl();
@@ -168,6 +172,7 @@ private:
     int m_contextGeneration = 0;
     bool m_nonFiniteCheck = false;
     NonFiniteOverlay* m_nonFiniteOverlay;
+    ViewportOverlay* m_overlay;
 };
 
 } // namespace vct::ui

@@ -5,6 +5,7 @@
 #include "ui/MaterialDock.h"
 #include "ui/NonFiniteOverlay.h"
 #include "ui/RenderSettingsDock.h"
+#include "ui/ViewportOverlay.h"
 #include "ui/ViewportWidget.h"
 #include "ui/VoxelInspectorDock.h"
 
@@ -53,6 +54,7 @@ private slots:
     void recoveredWorkIsUntitledAndSurvivesUntilSaved();
     void nonFiniteOverlayReportsEveryTarget();
     void f5ReloadsShadersAndSaysWhatFailed();
+    void overlayShowsSelectionLightsAndFigures();
 
 private:
     bool waitForFrame();
@@ -409,6 +411,47 @@ void EditorTest::f5ReloadsShadersAndSaysWhatFailed()
     qunsetenv("VCT_SHADER_DIR");
     const QString reloaded = m_window->statusBar()->currentMessage();
     QVERIFY2(reloaded.startsWith(QStringLiteral("Shaders reloaded")), qPrintable(reloaded));
+    QVERIFY(waitForFrame());
+}
+
+// The view says what it shows: the selected node's box, an icon where each light is, the frame's figures.
+void EditorTest::overlayShowsSelectionLightsAndFigures()
+{
+    m_window->document()->setSelectedNode(-1);
+    QVERIFY(waitForFrame());
+    const ui::ViewportOverlay* overlay = m_window->viewport()->overlay();
+    QVERIFY(overlay && overlay->isVisible());
+    QVERIFY(overlay->testAttribute(Qt::WA_TransparentForMouseEvents));
+    const QString status = overlay->statusText();
+    QVERIFY2(status.contains(QStringLiteral("ms GPU")) && status.contains(QStringLiteral("MiB"))
+            && status.contains(
+                QStringLiteral("voxels %1").arg(m_window->document()->state().settings.voxelResolution)
+                + QStringLiteral("³")),
+        qPrintable(status));
+    QVERIFY(overlay->selectionEdges().isEmpty());
+
+    // The point light of cornell_point hangs in the middle of the box, in view: its icon is on the image.
+    const QList<QPointF> icons = overlay->lightIconPositions();
+    QCOMPARE(icons.size(), qsizetype(1));
+    QVERIFY(overlay->rect().contains(icons.front().toPoint()));
+    const QImage drawn = m_window->viewport()->grab().toImage();
+    const QColor atIcon = drawn.pixelColor(icons.front().toPoint());
+    QVERIFY2(atIcon.red() > 200 && atIcon.green() > 200 && atIcon.blue() < 150, qPrintable(atIcon.name()));
+
+    // A selected box is outlined by its twelve edges, all in front of the camera.
+    m_window->document()->setSelectedNode(0);
+    QCOMPARE(overlay->selectionEdges().size(), qsizetype(12));
+    m_window->document()->setSelectedNode(-1);
+    QVERIFY(overlay->selectionEdges().isEmpty());
+
+    // A change that re-voxelizes says so until the frame after it.
+    render::Material material = m_window->document()->state().materials.front();
+    material.albedo *= 0.5f;
+    m_window->document()->setMaterial(0, material);
+    QVERIFY(waitForFrame());
+    QVERIFY2(
+        overlay->statusText().contains(QStringLiteral("re-voxelizing")), qPrintable(overlay->statusText()));
+    m_window->document()->undoStack()->undo();
     QVERIFY(waitForFrame());
 }
 
