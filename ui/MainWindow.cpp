@@ -74,6 +74,8 @@ MainWindow::MainWindow(QWidget* parent)
     , m_viewport(new ViewportWidget(m_document, this))
 {
     setCentralWidget(m_viewport);
+    // The view's keys (W/A/S/D, F, Home) work from the start, without a click into it first.
+    m_viewport->setFocus(Qt::OtherFocusReason);
     setAcceptDrops(true);
     setDockNestingEnabled(true);
     buildDocks();

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <QEnterEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -510,6 +511,16 @@ void ViewportWidget::focusOutEvent(QFocusEvent* event)
     m_flyTimer.stop();
     endGestureIfIdle();
     QOpenGLWidget::focusOutEvent(event);
+}
+
+void ViewportWidget::enterEvent(QEnterEvent* event)
+{
+    // The pointer over the view gives its keys to the view, as in Blender, unless a text field is being typed
+    // in (a name, a number): moving the mouse must not take its keystrokes away.
+    const QWidget* focused = window()->focusWidget();
+    if (!focused || !(focused->inherits("QLineEdit") || focused->inherits("QAbstractSpinBox")))
+        setFocus(Qt::MouseFocusReason);
+    QOpenGLWidget::enterEvent(event);
 }
 
 void ViewportWidget::resizeEvent(QResizeEvent* event)

@@ -12,9 +12,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QAction>
+#include <QApplication>
+#include <QEnterEvent>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
+#include <QTreeView>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -50,6 +54,7 @@ private slots:
     void undoViewReturnsToTheCameraBeforeTheLastGesture();
     void undoViewKeepsTheLast32Cameras();
     void frameAllFromInsideStaysInside();
+    void viewKeysWorkWithoutAClickFirst();
 
 private:
     bool waitForFrame();
@@ -361,4 +366,32 @@ void CameraTest::frameAllFromInsideStaysInside()
 }
 
 QTEST_MAIN(CameraTest)
+// The view has the keys from the start, and takes them back when the pointer comes over it, but not from a
+// field being typed in.
+void CameraTest::viewKeysWorkWithoutAClickFirst()
+{
+    auto window = test::showEditor(QStringLiteral("builtin:cornell_point"));
+    QVERIFY(window);
+    QTRY_COMPARE(window->focusWidget(), static_cast<QWidget*>(window->viewport()));
+
+    const auto enterView = [&] {
+        const QPointF centre(window->viewport()->width() / 2.0, window->viewport()->height() / 2.0);
+        QEnterEvent enter(centre, centre, window->viewport()->mapToGlobal(centre));
+        QApplication::sendEvent(window->viewport(), &enter);
+    };
+    auto* name = window->findChild<QLineEdit*>(QStringLiteral("lightName"));
+    QVERIFY(name);
+    name->setFocus();
+    QTRY_COMPARE(window->focusWidget(), static_cast<QWidget*>(name));
+    enterView();
+    QCOMPARE(window->focusWidget(), static_cast<QWidget*>(name));
+
+    auto* tree = window->findChild<QTreeView*>();
+    QVERIFY(tree);
+    tree->setFocus();
+    QTRY_COMPARE(window->focusWidget(), static_cast<QWidget*>(tree));
+    enterView();
+    QCOMPARE(window->focusWidget(), static_cast<QWidget*>(window->viewport()));
+}
+
 #include "tst_Camera.moc"
