@@ -2,6 +2,7 @@
 
 #include "AboutDialog.h"
 #include "AccuracyChartDock.h"
+#include "ExportSize.h"
 #include "LightDock.h"
 #include "MaterialDock.h"
 #include "ReferenceCompareDock.h"
@@ -197,8 +198,25 @@ void MainWindow::buildMenus()
         const QString path = QFileDialog::getSaveFileName(this, tr("Export image"),
             QStringLiteral("render.png"),
             tr("PNG, tone-mapped (*.png);;PFM, linear radiance (*.pfm);;OpenEXR, linear radiance (*.exr)"));
-        if (!path.isEmpty())
-            exportImage(path);
+        if (path.isEmpty())
+            return;
+        const qreal dpr = m_viewport->devicePixelRatioF();
+        const QSize view(int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
+        bool ok = true;
+        const QString choice = QInputDialog::getItem(this, tr("Export image"),
+            tr("Size in pixels (width×height; type another if you like):"), ExportSize::presets(view), 0,
+            true, &ok);
+        if (!ok)
+            return;
+        const std::optional<QSize> size = ExportSize::parse(choice);
+        if (!size) {
+            showError(tr("Export image"),
+                tr("'%1' is not a size: expected width×height, each 1 to %2 pixels")
+                    .arg(choice)
+                    .arg(ExportSize::kMaxSide));
+            return;
+        }
+        exportImage(path, *size);
     });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -471,11 +489,12 @@ bool MainWindow::reloadShaders()
     return false;
 }
 
-bool MainWindow::exportImage(const QString& path)
+bool MainWindow::exportImage(const QString& path, QSize size)
 {
     const qreal dpr = m_viewport->devicePixelRatioF();
-    const render::RadianceImage image
-        = m_viewport->renderFullFrame(int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
+    if (size.isEmpty())
+        size = QSize(int(m_viewport->width() * dpr), int(m_viewport->height() * dpr));
+    const render::RadianceImage image = m_viewport->renderFullFrame(size.width(), size.height());
     std::string error;
     if (image.isEmpty()
         || !io::ImageFile::write(path.toStdString(), image, m_document->state().settings.exposure, &error)) {

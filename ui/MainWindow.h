@@ -66,7 +66,8 @@ public:
     bool saveProjectAs(const QString& path);
     /** Imports on a worker thread behind a progress dialog; `unitScale` is metres per model unit. */
     bool importModel(const QString& path, float unitScale = 1.0f);
-    bool exportImage(const QString& path);
+    /** Renders at `size` pixels (empty: the view's own) with converged light and writes `path`. */
+    bool exportImage(const QString& path, QSize size = {});
     /**
      * Render > Reload shaders (F5): rebuilds every shader from ShaderFolder::forReload() and says in the
      * status bar what came of it; the failures (each program keeps its last good build) also go to the log.

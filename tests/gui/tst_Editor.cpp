@@ -1,6 +1,7 @@
 #include "EditorTestSetup.h"
 #include "TestSupport.h"
 
+#include "ui/ExportSize.h"
 #include "ui/MainWindow.h"
 #include "ui/MaterialDock.h"
 #include "ui/NonFiniteOverlay.h"
@@ -235,6 +236,22 @@ void EditorTest::exportWritesImages()
     QVERIFY2(linear, error.c_str());
     QCOMPARE(io::ImageMetrics::nonFiniteCount(*linear), std::size_t(0));
     QVERIFY(io::ImageMetrics::meanLuminance(*linear) > 0.0);
+
+    // At a size of the user's choosing, typed as the dialog takes it.
+    const std::optional<QSize> size = ui::ExportSize::parse(QStringLiteral("96 x 54"));
+    QCOMPARE(size, std::optional<QSize>(QSize(96, 54)));
+    QVERIFY(m_window->exportImage(pfm, *size));
+    const auto sized = io::ImageFile::read(pfm.toStdString(), &error);
+    QVERIFY2(sized, error.c_str());
+    QCOMPARE(sized->width, 96);
+    QCOMPARE(sized->height, 54);
+    QCOMPARE(ui::ExportSize::parse(ui::ExportSize::presets(QSize(640, 480)).front()),
+        std::optional<QSize>(QSize(640, 480)));
+    QCOMPARE(ui::ExportSize::parse(QStringLiteral("1920×1080 (Full HD)")),
+        std::optional<QSize>(QSize(1920, 1080)));
+    QVERIFY(!ui::ExportSize::parse(QStringLiteral("0x100")));
+    QVERIFY(!ui::ExportSize::parse(QStringLiteral("20000x100")));
+    QVERIFY(!ui::ExportSize::parse(QStringLiteral("large")));
 }
 
 // Floating a panel or moving to another screen destroys the GL context: the viewport must rebuild.
