@@ -54,8 +54,13 @@ AccuracyChartDock::AccuracyChartDock(QWidget* parent)
     m_reference->setName(tr("Path tracer"));
     m_reference->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
     m_reference->setMarkerSize(9.0);
+    m_comparison = new QScatterSeries(m_chart);
+    m_comparison->setName(tr("Compared in the editor"));
+    m_comparison->setMarkerShape(QScatterSeries::MarkerShapeStar);
+    m_comparison->setMarkerSize(14.0);
     m_chart->addSeries(m_vct);
     m_chart->addSeries(m_reference);
+    m_chart->addSeries(m_comparison);
     m_timeAxis = new QLogValueAxis(m_chart);
     m_timeAxis->setTitleText(tr("time, ms (VCT: GPU per frame; path tracer: wall clock)"));
     m_timeAxis->setLabelFormat(QStringLiteral("%g"));
@@ -66,7 +71,7 @@ AccuracyChartDock::AccuracyChartDock(QWidget* parent)
     m_errorAxis->setMinorTickCount(-1);
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
     m_chart->addAxis(m_errorAxis, Qt::AlignLeft);
-    for (QScatterSeries* series : { m_vct, m_reference }) {
+    for (QScatterSeries* series : { m_vct, m_reference, m_comparison }) {
         series->attachAxis(m_timeAxis);
         series->attachAxis(m_errorAxis);
     }
@@ -76,6 +81,8 @@ AccuracyChartDock::AccuracyChartDock(QWidget* parent)
         [this](const QPointF& point, bool state) { showPointTip(false, point, state); });
     connect(m_reference, &QScatterSeries::hovered, this,
         [this](const QPointF& point, bool state) { showPointTip(true, point, state); });
+    connect(m_comparison, &QScatterSeries::hovered, this,
+        [this](const QPointF& point, bool state) { showPointTip(false, point, state); });
 
     m_view = new QChartView(m_chart, body);
     m_view->setObjectName(QStringLiteral("accuracyChartView"));
@@ -131,21 +138,37 @@ bool AccuracyChartDock::loadCsv(const QString& path, QString* error)
     return true;
 }
 
+void AccuracyChartDock::addComparison(const QString& label, double timeMs, double relativeMse)
+{
+    if (!(timeMs > 0.0) || !(relativeMse > 0.0) || !std::isfinite(timeMs) || !std::isfinite(relativeMse))
+        return; // not on a log chart
+    m_comparisons.push_back({ label, timeMs, relativeMse, false });
+    plot();
+}
+
 void AccuracyChartDock::plot()
 {
-    QList<QPointF> vct, reference;
+    QList<QPointF> vct, reference, compared;
     double timeLo = std::numeric_limits<double>::max(), timeHi = 0.0;
     double errorLo = std::numeric_limits<double>::max(), errorHi = 0.0;
-    for (const SweepResults::Point& point : m_results.points()) {
-        (point.reference ? reference : vct).append(QPointF(point.timeMs, point.relativeMse));
+    const auto fit = [&](const SweepResults::Point& point) {
         timeLo = std::min(timeLo, point.timeMs);
         timeHi = std::max(timeHi, point.timeMs);
         errorLo = std::min(errorLo, point.relativeMse);
         errorHi = std::max(errorHi, point.relativeMse);
+    };
+    for (const SweepResults::Point& point : m_results.points()) {
+        (point.reference ? reference : vct).append(QPointF(point.timeMs, point.relativeMse));
+        fit(point);
+    }
+    for (const SweepResults::Point& point : m_comparisons) {
+        compared.append(QPointF(point.timeMs, point.relativeMse));
+        fit(point);
     }
     m_vct->replace(vct);
     m_reference->replace(reference);
-    const bool empty = m_results.points().empty();
+    m_comparison->replace(compared);
+    const bool empty = m_results.points().empty() && m_comparisons.empty();
     fitLogAxis(m_timeAxis, empty ? 0.0 : timeLo, timeHi);
     fitLogAxis(m_errorAxis, empty ? 0.0 : errorLo, errorHi);
     m_chart->setTitle(m_path.isEmpty()
@@ -162,7 +185,9 @@ void AccuracyChartDock::showPointTip(bool reference, const QPointF& point, bool 
     // The series hands back the point's coordinates only: find the row nearest to it in log space.
     const SweepResults::Point* nearest = nullptr;
     double best = std::numeric_limits<double>::max();
-    for (const SweepResults::Point& candidate : m_results.points()) {
+    std::vector<SweepResults::Point> candidates = m_results.points();
+    candidates.insert(candidates.end(), m_comparisons.begin(), m_comparisons.end());
+    for (const SweepResults::Point& candidate : candidates) {
         if (candidate.reference != reference)
             continue;
         const double dx = std::log10(candidate.timeMs) - std::log10(point.x());

@@ -33,6 +33,14 @@ public:
      */
     static QString findDefaultSweep();
 
+    /**
+     * A comparison made in the editor (Render > Compare with reference): a point of its own series beside the
+     * sweep's, kept for the session. Ignored unless time and error are positive.
+     */
+    void addComparison(const QString& label, double timeMs, double relativeMse);
+    const std::vector<SweepResults::Point>& comparisons() const { return m_comparisons; }
+    QScatterSeries* comparisonSeries() const { return m_comparison; }
+
     QString loadedPath() const { return m_path; }
     const SweepResults& results() const { return m_results; }
     QChartView* chartView() const { return m_view; }
@@ -55,6 +63,8 @@ private:
     QChart* m_chart;
     QScatterSeries* m_vct;
     QScatterSeries* m_reference;
+    QScatterSeries* m_comparison;
+    std::vector<SweepResults::Point> m_comparisons;
     QLogValueAxis* m_timeAxis;
     QLogValueAxis* m_errorAxis;
     QPushButton* m_open;

@@ -118,6 +118,20 @@ void MainWindow::buildDocks()
     m_accuracyDock = new AccuracyChartDock(this);
     m_sceneDock->setDocument(m_document);
     m_compareDock->setDocument(m_document);
+    // Every comparison made here is a point on the accuracy chart, beside the last sweep's.
+    connect(m_compareDock, &ReferenceCompareDock::comparisonFinished, this, [this] {
+        const ReferenceUpdate& last = m_compareDock->lastUpdate();
+        // Stale: the settings changed since it started, and the point could not say which it measured.
+        if (last.samplesPerPixel <= 0 || m_compareDock->isStale())
+            return;
+        const render::RenderSettings& s = m_document->state().settings;
+        m_accuracyDock->addComparison(tr("in the editor: %1 voxels a side, %2 cones of %3°; reference %4 spp")
+                                          .arg(s.voxelResolution)
+                                          .arg(s.diffuseConeCount)
+                                          .arg(double(s.diffuseApertureDeg))
+                                          .arg(last.samplesPerPixel),
+            m_compareDock->vctGpuMs(), last.relativeMse);
+    });
     m_materialDock->setDocument(m_document);
     m_transformDock->setDocument(m_document);
     m_lightDock->setDocument(m_document);

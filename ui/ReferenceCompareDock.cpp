@@ -290,6 +290,8 @@ void ReferenceCompareDock::onFinished(int jobId, bool completed, int samplesPerP
         m_progress->setValue(m_progress->maximum());
         m_status->setText(tr("Done: %1 spp in %2.").arg(samplesPerPixel).arg(elapsed));
     } else if (samplesPerPixel > 0) {
+        // The bar had moved on into the pass that was dropped: back to what the numbers are of.
+        m_progress->setValue(std::min(m_progress->maximum(), samplesPerPixel));
         m_status->setText(
             tr("Cancelled at %1 spp; the last finished pass stays shown.").arg(samplesPerPixel));
     } else {
