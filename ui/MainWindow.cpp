@@ -274,6 +274,27 @@ void MainWindow::buildMenus()
     undoView->setObjectName(QStringLiteral("undoViewAction"));
     undoView->setEnabled(false);
     connect(m_viewport, &ViewportWidget::viewHistoryChanged, undoView, &QAction::setEnabled);
+    QAction* bookmark
+        = m_viewMenu->addAction(tr("&Bookmark view..."), QKeySequence(tr("Ctrl+B")), this, [this] {
+              QString name;
+              if (dialogsAllowed()) {
+                  bool ok = false;
+                  name = QInputDialog::getText(this, tr("Bookmark view"), tr("Name:"), QLineEdit::Normal,
+                      tr("View %1").arg(m_document->state().bookmarks.size() + 1), &ok);
+                  if (!ok)
+                      return;
+              }
+              m_document->addBookmark(name);
+          });
+    bookmark->setObjectName(QStringLiteral("bookmarkViewAction"));
+    bookmark->setToolTip(tr("Keep the current view in the project, to come back to from View > Bookmarks"));
+    m_bookmarksMenu = m_viewMenu->addMenu(tr("Boo&kmarks"));
+    m_bookmarksMenu->setObjectName(QStringLiteral("bookmarksMenu"));
+    rebuildBookmarksMenu();
+    connect(m_document, &doc::Document::changed, this, [this](const doc::ChangeEvent& event) {
+        if (event.kind == doc::ChangeEvent::Kind::Bookmarks || event.kind == doc::ChangeEvent::Kind::Reset)
+            rebuildBookmarksMenu();
+    });
     QAction* nonFinite = m_viewMenu->addAction(tr("Check for &NaN/Inf"));
     nonFinite->setObjectName(QStringLiteral("nonFiniteCheckAction"));
     nonFinite->setCheckable(true);
@@ -478,6 +499,26 @@ bool MainWindow::importModel(const QString& path, float unitScale)
     m_document->addImportedModel(path, std::move(loaded.scene), unitScale);
     statusBar()->showMessage(tr("Imported %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
+}
+
+void MainWindow::rebuildBookmarksMenu()
+{
+    m_bookmarksMenu->clear();
+    const std::vector<doc::CameraBookmark>& bookmarks = m_document->state().bookmarks;
+    m_bookmarksMenu->setEnabled(!bookmarks.empty());
+    if (bookmarks.empty())
+        return;
+    for (std::size_t i = 0; i < bookmarks.size(); ++i) {
+        QAction* go = m_bookmarksMenu->addAction(bookmarks[i].name);
+        go->setObjectName(QStringLiteral("bookmark%1Action").arg(i));
+        if (i < 9)
+            go->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + int(i))));
+        connect(go, &QAction::triggered, m_viewport, [this, i] { m_viewport->goToBookmark(int(i)); });
+    }
+    m_bookmarksMenu->addSeparator();
+    QMenu* remove = m_bookmarksMenu->addMenu(tr("&Remove"));
+    for (std::size_t i = 0; i < bookmarks.size(); ++i)
+        remove->addAction(bookmarks[i].name, this, [this, i] { m_document->removeBookmark(int(i)); });
 }
 
 bool MainWindow::reloadShaders()

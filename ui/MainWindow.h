@@ -94,6 +94,8 @@ private:
     void addRecentFile(const QString& path);
     void rebuildRecentMenu();
     void updateTitle();
+    /** View > Bookmarks: one entry per bookmark (Ctrl+1 to Ctrl+9 for the first nine), and Remove. */
+    void rebuildBookmarksMenu();
 
     doc::Document* m_document;
     ViewportWidget* m_viewport;
@@ -107,6 +109,7 @@ private:
     ReferenceCompareDock* m_compareDock = nullptr;
     AccuracyChartDock* m_accuracyDock = nullptr;
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_bookmarksMenu = nullptr;
     QMenu* m_recentMenu = nullptr;
     QTimer m_autosaveTimer;
 };

@@ -269,6 +269,13 @@ void ViewportWidget::endGesture()
     emit viewHistoryChanged(!m_history.isEmpty());
 }
 
+void ViewportWidget::goToBookmark(int index)
+{
+    const std::vector<doc::CameraBookmark>& bookmarks = m_document->state().bookmarks;
+    if (index >= 0 && std::size_t(index) < bookmarks.size())
+        jumpTo(bookmarks[std::size_t(index)].camera);
+}
+
 void ViewportWidget::jumpTo(const render::Camera& camera)
 {
     // A jump in the middle of a drag or a flight splits it: what came before, the jump and what follows are

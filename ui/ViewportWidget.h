@@ -92,6 +92,8 @@ public slots:
     void frameAll();
     /** Back to the document's own camera, as opened or last saved. */
     void resetCamera();
+    /** To bookmark `index` of the document, as one step of Undo view. */
+    void goToBookmark(int index);
     /** Back to the camera before the last completed orbit, pan, zoom, fly, frame or reset. */
     void undoView();
 

@@ -12,6 +12,7 @@ struct ChangeEvent {
         Material, ///< index = material
         Lights, ///< any light added, removed or edited
         Camera,
+        Bookmarks, ///< the camera bookmarks (DocumentState::bookmarks)
         Settings,
     };
     Kind kind = Kind::Reset;

@@ -9,6 +9,7 @@
 #include "commands/DuplicateNodeCommand.h"
 #include "commands/ImportModelCommand.h"
 #include "commands/RemoveLightCommand.h"
+#include "commands/SetBookmarksCommand.h"
 #include "commands/SetLightCommand.h"
 #include "commands/SetMaterialCommand.h"
 #include "commands/SetNodePropertiesCommand.h"
@@ -438,6 +439,27 @@ void Document::setLight(int index, const LightNode& light, LightField field)
     if (edited == m_state.lights[std::size_t(index)])
         return;
     m_undoStack.push(new SetLightCommand(this, index, edited, field));
+}
+
+void Document::addBookmark(const QString& name)
+{
+    std::vector<CameraBookmark> bookmarks = m_state.bookmarks;
+    CameraBookmark bookmark { name.trimmed(), m_state.camera };
+    if (bookmark.name.isEmpty())
+        bookmark.name = QStringLiteral("View %1").arg(bookmarks.size() + 1);
+    bookmarks.push_back(bookmark);
+    m_undoStack.push(
+        new SetBookmarksCommand(this, std::move(bookmarks), tr("Bookmark %1").arg(bookmark.name)));
+}
+
+void Document::removeBookmark(int index)
+{
+    if (index < 0 || std::size_t(index) >= m_state.bookmarks.size())
+        return;
+    std::vector<CameraBookmark> bookmarks = m_state.bookmarks;
+    const QString name = bookmarks[std::size_t(index)].name;
+    bookmarks.erase(bookmarks.begin() + index);
+    m_undoStack.push(new SetBookmarksCommand(this, std::move(bookmarks), tr("Remove bookmark %1").arg(name)));
 }
 
 void Document::addLight(const LightNode& light)

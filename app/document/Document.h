@@ -94,6 +94,10 @@ public:
     void setSettings(const render::RenderSettings& settings);
     /** Not undoable: moving the view is not an edit (as in Blender and Godot); saved with the project. */
     void setCamera(const render::Camera& camera);
+    /** Keeps the current camera as a bookmark named `name` (empty: "View N"); one undo step. */
+    void addBookmark(const QString& name = {});
+    /** Forgets bookmark `index`; one undo step. */
+    void removeBookmark(int index);
     /**
      * The camera as the scene or project was opened or last saved, for View > Reset camera. A copy apart from
      * state().camera, because that one is what the view moves: after the first orbit it no longer says where

@@ -27,7 +27,11 @@ bool sameDocument(const DocumentState& a, const DocumentState& b)
     return a.sources == b.sources && a.nodes == b.nodes && a.lights == b.lights && a.nextId == b.nextId
         && std::equal(
             a.materials.begin(), a.materials.end(), b.materials.begin(), b.materials.end(), sameMaterial)
-        && sameCamera(a.camera, b.camera) && sameSettings(a.settings, b.settings);
+        && sameCamera(a.camera, b.camera) && sameSettings(a.settings, b.settings)
+        && std::equal(a.bookmarks.begin(), a.bookmarks.end(), b.bookmarks.begin(), b.bookmarks.end(),
+            [](const CameraBookmark& x, const CameraBookmark& y) {
+                return x.name == y.name && sameCamera(x.camera, y.camera);
+            });
 }
 
 } // namespace vct::doc

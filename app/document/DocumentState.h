@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CameraBookmark.h"
 #include "LightNode.h"
 #include "SceneNode.h"
 
@@ -30,6 +31,7 @@ struct DocumentState {
     std::vector<render::Material> materials;
     std::vector<LightNode> lights;
     render::Camera camera;
+    std::vector<CameraBookmark> bookmarks; ///< Named views, in the order they were kept.
     render::RenderSettings settings;
     quint64 nextId = 1; ///< Next free SceneNode/LightNode id.
 };

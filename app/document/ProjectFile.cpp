@@ -435,28 +435,62 @@ bool readLights(ProjectReader& r, const QJsonObject& root, DocumentState& out)
     return true;
 }
 
-bool readCamera(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+/** The camera fields of `o`; `path` prefixes field names in errors ("camera.", "bookmarks[2]."). */
+bool readCameraFields(ProjectReader& r, const QJsonObject& o, const QString& path, render::Camera* camera)
 {
-    QJsonObject o;
     render::Camera c;
-    if (!r.readObject(root.value("camera"), "camera", &o)
-        || !r.readFiniteVec3(o, "position", "camera.position", &c.position)
-        || !r.readFiniteVec3(o, "look_at", "camera.look_at", &c.lookAt)
-        || !r.readFiniteVec3(o, "up", "camera.up", &c.up)
-        || !r.readFloat(o, "fov_y_deg", "camera.fov_y_deg", 0.0f, &c.fovYDeg))
+    if (!r.readFiniteVec3(o, "position", path + "position", &c.position)
+        || !r.readFiniteVec3(o, "look_at", path + "look_at", &c.lookAt)
+        || !r.readFiniteVec3(o, "up", path + "up", &c.up)
+        || !r.readFloat(o, "fov_y_deg", path + "fov_y_deg", 0.0f, &c.fovYDeg))
         return false;
     if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f))
         return r.fail(
-            "camera.fov_y_deg", QStringLiteral("must be between 0 and 180 degrees, found %1").arg(c.fovYDeg));
+            path + "fov_y_deg", QStringLiteral("must be between 0 and 180 degrees, found %1").arg(c.fovYDeg));
     // Optional: hand-written projects may leave the near plane at its default.
     if (r.hasField(o, "near_plane")) {
-        if (!r.readFloat(o, "near_plane", "camera.near_plane", 0.0f, &c.nearPlane))
+        if (!r.readFloat(o, "near_plane", path + "near_plane", 0.0f, &c.nearPlane))
             return false;
         if (!(c.nearPlane > 0.0f))
-            return r.fail("camera.near_plane", QStringLiteral("must be greater than 0"));
+            return r.fail(path + "near_plane", QStringLiteral("must be greater than 0"));
     }
-    out.camera = c;
+    *camera = c;
     return true;
+}
+
+bool readCamera(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    QJsonObject o;
+    return r.readObject(root.value("camera"), "camera", &o)
+        && readCameraFields(r, o, QStringLiteral("camera."), &out.camera);
+}
+
+/** "bookmarks": optional (projects before bookmarks have none), each a name and camera fields. */
+bool readBookmarks(ProjectReader& r, const QJsonObject& root, DocumentState& out)
+{
+    if (!root.contains(QStringLiteral("bookmarks")))
+        return true;
+    QJsonArray array;
+    if (!r.readArray(
+            root, QStringLiteral("bookmarks"), QStringLiteral("bookmarks"), ProjectFile::kMaxNodes, &array))
+        return false;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = QStringLiteral("bookmarks[%1].").arg(i);
+        QJsonObject o;
+        CameraBookmark bookmark;
+        if (!r.readObject(array[i], path.chopped(1), &o)
+            || !r.readString(o, "name", path + "name", &bookmark.name)
+            || !readCameraFields(r, o, path, &bookmark.camera))
+            return false;
+        out.bookmarks.push_back(bookmark);
+    }
+    return true;
+}
+
+QJsonObject cameraJson(const render::Camera& c)
+{
+    return QJsonObject { { "position", toArray(c.position) }, { "look_at", toArray(c.lookAt) },
+        { "up", toArray(c.up) }, { "fov_y_deg", double(c.fovYDeg) }, { "near_plane", double(c.nearPlane) } };
 }
 
 bool readSettings(ProjectReader& r, const QJsonObject& root, DocumentState& out)
@@ -550,16 +584,21 @@ QByteArray ProjectFile::toJson(const DocumentState& state, const QString& projec
         }
         lights.append(light);
     }
-    const render::Camera& c = state.camera;
-    const QJsonObject camera { { "position", toArray(c.position) }, { "look_at", toArray(c.lookAt) },
-        { "up", toArray(c.up) }, { "fov_y_deg", double(c.fovYDeg) }, { "near_plane", double(c.nearPlane) } };
+    const QJsonObject camera = cameraJson(state.camera);
+    QJsonArray bookmarks;
+    for (const CameraBookmark& bookmark : state.bookmarks) {
+        QJsonObject entry = cameraJson(bookmark.camera);
+        entry.insert(QStringLiteral("name"), bookmark.name);
+        bookmarks.append(entry);
+    }
     QJsonObject settings;
     for (const auto& row : state.settings.describe())
         settings.insert(QString::fromStdString(row[0]), QString::fromStdString(row[1]));
 
     const QJsonObject root { { "format", QString::fromLatin1(kFormat) }, { "version", kVersion },
         { "sources", sources }, { "materials", materials }, { "nodes", nodes }, { "lights", lights },
-        { "camera", camera }, { "settings", settings }, { "next_id", qint64(state.nextId) } };
+        { "camera", camera }, { "bookmarks", bookmarks }, { "settings", settings },
+        { "next_id", qint64(state.nextId) } };
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -623,8 +662,8 @@ bool ProjectFile::fromJson(const QByteArray& json, const QString& projectDir, co
     whole.used = !hasNodes;
     if (!readSources(r, root, projectDir, result) || !readPlacements(r, root, whole)
         || (hasMaterials && (!readMaterials(r, root, result) || !readNodes(r, root, result)))
-        || !readLights(r, root, result) || !readCamera(r, root, result) || !readSettings(r, root, result)
-        || !readIds(r, root, result))
+        || !readLights(r, root, result) || !readCamera(r, root, result) || !readBookmarks(r, root, result)
+        || !readSettings(r, root, result) || !readIds(r, root, result))
         return failed();
     *state = std::move(result);
     if (wholeSources)

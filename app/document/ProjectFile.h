@@ -12,7 +12,8 @@ namespace vct::doc {
  * The project file (*.vctproj): versioned JSON holding a DocumentState.
  *
  * `{"format": "vct-studio-project", "version": 1, "sources": [...], "nodes": [...], "materials": [...],
- *   "lights": [...], "camera": {...}, "settings": {"voxel_res": "128", ...}, "next_id": N}`
+ *   "lights": [...], "camera": {...}, "bookmarks": [...], "settings": {"voxel_res": "128", ...}, "next_id":
+ * N}`
  *
  * - sources: spec, and for a model unit_scale (metres per model unit, 0.01 for centimetres; optional, 1
  *   when absent and written only when not 1: an older reader ignores it and loads the model unscaled).
@@ -31,6 +32,7 @@ namespace vct::doc {
  *   both optional (0 when absent). New light types and fields came without a new version: an older reader
  *   refuses a new type naming it and ignores the sizes, and every file it could read reads the same.
  * - camera: position, look_at, up, fov_y_deg, near_plane (m).
+ * - bookmarks (optional, none when absent): name and the camera's fields, one per kept view.
  * - settings: every RenderSettings key with its value as text, read back through RenderSettings::set.
  *
  * A project may omit both nodes and materials (never just one): every source is then taken whole, one node

@@ -55,6 +55,7 @@ private slots:
     void undoViewKeepsTheLast32Cameras();
     void frameAllFromInsideStaysInside();
     void viewKeysWorkWithoutAClickFirst();
+    void bookmarksReturnToAViewAndUndo();
 
 private:
     bool waitForFrame();
@@ -392,6 +393,33 @@ void CameraTest::viewKeysWorkWithoutAClickFirst()
     QTRY_COMPARE(window->focusWidget(), static_cast<QWidget*>(tree));
     enterView();
     QCOMPARE(window->focusWidget(), static_cast<QWidget*>(window->viewport()));
+}
+
+// View > Bookmark view keeps the camera in the document (one undo step); its entry in View > Bookmarks
+// (Ctrl+1) goes back to it, as a step of Undo view.
+void CameraTest::bookmarksReturnToAViewAndUndo()
+{
+    const render::Camera kept = camera();
+    const int steps = m_window->document()->undoStack()->count();
+    action("bookmarkViewAction")->trigger();
+    QCOMPARE(m_window->document()->state().bookmarks.size(), std::size_t(1));
+    QCOMPARE(m_window->document()->state().bookmarks[0].name, QStringLiteral("View 1"));
+    QCOMPARE(m_window->document()->undoStack()->count(), steps + 1);
+    QVERIFY(m_window->document()->isModified());
+
+    render::Camera moved = kept;
+    moved.position += glm::vec3(0.3f, 0.1f, -0.2f);
+    m_window->document()->setCamera(moved);
+    QAction* go = action("bookmark0Action");
+    QCOMPARE(go->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_1));
+    go->trigger();
+    QVERIFY(doc::sameCamera(camera(), kept));
+    action("undoViewAction")->trigger();
+    QVERIFY(doc::sameCamera(camera(), moved));
+
+    m_window->document()->undoStack()->undo();
+    QVERIFY(m_window->document()->state().bookmarks.empty());
+    QVERIFY(!m_window->findChild<QAction*>(QStringLiteral("bookmark0Action")));
 }
 
 #include "tst_Camera.moc"

@@ -83,6 +83,10 @@ bool makeEditedCornell(Document& doc)
     camera.position += glm::vec3(0.1f, 0.2f, -0.3f);
     camera.fovYDeg = 35.5f;
     doc.setCamera(camera);
+    doc.addBookmark(QStringLiteral("Near the tall box"));
+    camera.position.x -= 0.5f;
+    doc.setCamera(camera);
+    doc.addBookmark();
     return true;
 }
 
@@ -114,6 +118,19 @@ private slots:
         QCOMPARE(root.value("settings").toObject().value("voxel_res").toString(), QStringLiteral("64"));
         QCOMPARE(root.value("lights").toArray().last().toObject().value("type").toString(),
             QStringLiteral("directional"));
+        QCOMPARE(reopened.state().bookmarks.size(), std::size_t(2));
+        QCOMPARE(reopened.state().bookmarks[0].name, QStringLiteral("Near the tall box"));
+        QCOMPARE(reopened.state().bookmarks[1].name, QStringLiteral("View 2"));
+        QCOMPARE(reopened.state().bookmarks[1].camera.position, doc.state().camera.position);
+
+        // Projects from before bookmarks have none, and open.
+        QJsonObject old = root;
+        old.remove(QStringLiteral("bookmarks"));
+        DocumentState state;
+        QVERIFY2(ProjectFile::fromJson(QJsonDocument(old).toJson(), QDir::tempPath(),
+                     QStringLiteral("old.vctproj"), &state, &error),
+            qPrintable(error));
+        QVERIFY(state.bookmarks.empty());
     }
 
     void jsonRoundTrip()
@@ -320,6 +337,20 @@ private slots:
             zeros += "0,";
         huge.replace("\"nodes\": [", "\"nodes\": [" + zeros);
         QTest::newRow("huge node count") << huge << QStringLiteral("more than 1000000 are refused");
+        QTest::newRow("bookmark with a bad field of view") << edited([](QJsonObject& o) {
+            QJsonArray bookmarks = o.value("bookmarks").toArray();
+            QJsonObject first = bookmarks[0].toObject();
+            first.insert("fov_y_deg", 200.0);
+            bookmarks[0] = first;
+            o.insert("bookmarks", bookmarks);
+        }) << QStringLiteral("bookmarks[0].fov_y_deg");
+        QTest::newRow("bookmark without a name") << edited([](QJsonObject& o) {
+            QJsonArray bookmarks = o.value("bookmarks").toArray();
+            QJsonObject first = bookmarks[0].toObject();
+            first.remove("name");
+            bookmarks[0] = first;
+            o.insert("bookmarks", bookmarks);
+        }) << QStringLiteral("bookmarks[0].name");
     }
 
     void corruptFilesAreRefused()
