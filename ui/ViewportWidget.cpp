@@ -6,6 +6,7 @@
 
 #include "core/Renderer.h"
 #include "document/Document.h"
+#include "scene/CameraBasis.h"
 #include "sync/NodePicker.h"
 #include "sync/SceneSync.h"
 
@@ -336,14 +337,10 @@ bool ViewportWidget::rayThrough(
         return false;
     const render::Camera& camera = m_document->state().camera;
     const float aspect = float(rect.width()) / float(rect.height());
-    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
-    const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::vec3 up = glm::cross(right, forward);
     const float ndcX = 2.0f * (x + 0.5f) / float(rect.width()) - 1.0f;
     const float ndcY = 1.0f - 2.0f * (y + 0.5f) / float(rect.height());
     origin = camera.position;
-    direction = glm::normalize(forward + right * (ndcX * tanHalf * aspect) + up * (ndcY * tanHalf));
+    direction = glm::normalize(render::CameraBasis::of(camera).through(ndcX, ndcY, aspect));
     return true;
 }
 
@@ -379,12 +376,10 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
             return;
         doc::NodeTransform transform = m_document->state().nodes[std::size_t(node)].transform;
         const glm::vec3 center = glm::vec3(m_document->nodeWorldTransform(node)[3]);
-        const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-        const glm::vec3 up = glm::cross(right, forward);
+        const render::CameraBasis basis = render::CameraBasis::of(camera);
+        const glm::vec3 &forward = basis.forward, &right = basis.right, &up = basis.up;
         const float distance = std::max(glm::dot(center - camera.position, forward), 0.1f);
-        const float metresPerPixel
-            = 2.0f * distance * std::tan(glm::radians(camera.fovYDeg) * 0.5f) / float(std::max(1, height()));
+        const float metresPerPixel = 2.0f * distance * basis.tanHalfFovY / float(std::max(1, height()));
         glm::vec3 move = (right * float(delta.x()) - up * float(delta.y())) * metresPerPixel;
         // Holding X, Y or Z keeps the move on that world axis, as in Blender's G X / G Y / G Z.
         for (const auto& [key, axis] :

@@ -1,5 +1,7 @@
 #include "core/Renderer.h"
 
+#include "scene/CameraBasis.h"
+
 #include "core/ConeSampleCounter.h"
 #include "core/ConeSet.h"
 #include "core/FiniteCheck.h"
@@ -163,16 +165,12 @@ CameraMatrices cameraMatrices(const Camera& camera, float aspect, const Aabb& bo
 
 glm::mat3 pixelToRay(const Camera& camera, int width, int height)
 {
-    // The columns of the view's rotation (right, up, back), as glm::lookAt builds it.
-    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), camera.lookAt - camera.position, camera.up);
-    const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
-    const glm::vec3 up(view[0][1], view[1][1], view[2][1]);
-    const glm::vec3 forward(-view[0][2], -view[1][2], -view[2][2]);
-    const float tanY = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const CameraBasis b = CameraBasis::of(camera);
+    const float tanY = b.tanHalfFovY;
     const float tanX = tanY * float(width) / float(height);
     // Pixel x in [0, width] maps to ndc -1..1, times tanX along right, and likewise y; forward stays 1.
-    return glm::mat3(right * (2.0f * tanX / float(width)), up * (2.0f * tanY / float(height)),
-        forward - right * tanX - up * tanY);
+    return glm::mat3(b.right * (2.0f * tanX / float(width)), b.up * (2.0f * tanY / float(height)),
+        b.forward - b.right * tanX - b.up * tanY);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "reference/CameraRays.h"
 
+#include "scene/CameraBasis.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -13,13 +15,10 @@ CameraRays::CameraRays(const Camera& camera, int width, int height, const Aabb& 
     , m_width(float(std::max(1, width)))
     , m_height(float(std::max(1, height)))
 {
-    // The same basis glm::lookAt builds (right-handed, the camera looks down its -z).
-    m_forward = glm::normalize(camera.lookAt - camera.position);
-    const glm::vec3 side = glm::normalize(glm::cross(m_forward, camera.up));
-    const glm::vec3 up = glm::cross(side, m_forward);
-    const float tanHalfFov = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
-    m_right = side * (tanHalfFov * m_width / m_height);
-    m_up = up * tanHalfFov;
+    const CameraBasis basis = CameraBasis::of(camera);
+    m_forward = basis.forward;
+    m_right = basis.right * (basis.tanHalfFovY * m_width / m_height);
+    m_up = basis.up * basis.tanHalfFovY;
     // Renderer.cpp's cameraMatrices(): the near plane follows the far plane, which follows the scene.
     const float sceneRadius = std::max(0.5f * glm::length(sceneBounds.size()), 1e-3f);
     const float farPlane = glm::length(camera.position - sceneBounds.center()) + 2.0f * sceneRadius;
