@@ -256,6 +256,15 @@ LightDock::LightDock(QWidget* parent)
     layout->addWidget(m_editors);
     layout->addStretch();
     setWidget(body);
+    // As wide as the widest light needs, whatever light is shown: rows come and go with the type, and a
+    // dock following them resized the view beside it (70 px when a sun was selected).
+    const std::initializer_list<QWidget*> optionalRows { m_directionLabel, m_directionRow, m_spotLabel,
+        m_spotRow, m_radiusLabel, m_radius, m_angularDiameterLabel, m_angularDiameter, m_areaWidthLabel,
+        m_areaWidth, m_areaHeightLabel, m_areaHeight, m_areaRotationLabel, m_areaRotation };
+    for (QWidget* w : optionalRows)
+        w->show();
+    m_intensity->setSuffix(intensityUnit(doc::LightType::Rect)); // the longest unit
+    body->setMinimumWidth(body->sizeHint().width());
 
     connect(m_addPoint, &QPushButton::clicked, this, &LightDock::addPointLight);
     connect(m_addDirectional, &QPushButton::clicked, this, &LightDock::addDirectionalLight);

@@ -40,6 +40,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -571,6 +572,20 @@ bool MainWindow::maybeSave()
     if (answer == QMessageBox::Save)
         return save();
     return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showEvent(QShowEvent* event)
+{
+    QMainWindow::showEvent(event);
+    if (m_dockWidthsFixed)
+        return;
+    m_dockWidthsFixed = true;
+    // Dock areas otherwise follow their panels' size hints, so a panel whose rows change (a light of another
+    // type, a longer name in the scene tree) moved the view. Widths set once here are the user's to change.
+    QTimer::singleShot(0, this, [this] {
+        resizeDocks({ m_sceneDock, m_materialDock }, { m_sceneDock->width(), m_materialDock->width() },
+            Qt::Horizontal);
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -77,6 +77,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -110,6 +111,7 @@ private:
     AccuracyChartDock* m_accuracyDock = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_bookmarksMenu = nullptr;
+    bool m_dockWidthsFixed = false;
     QMenu* m_recentMenu = nullptr;
     QTimer m_autosaveTimer;
 };
