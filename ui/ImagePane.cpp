@@ -27,7 +27,8 @@ void ImagePane::setCaption(const QString& caption)
 
 QSize ImagePane::sizeHint() const
 {
-    return QSize(200, 150 + fontMetrics().height());
+    // Big enough to judge a comparison by eye: the panes were 128 px thumbnails in a narrow dock.
+    return QSize(320, 240 + fontMetrics().height());
 }
 
 QSize ImagePane::minimumSizeHint() const

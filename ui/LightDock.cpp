@@ -460,6 +460,7 @@ void LightDock::loadLight()
         const QSignalBlocker blockName(m_name), blockIntensity(m_intensity), blockColor(m_color);
         m_name->clear();
         m_intensity->setValue(0.0);
+        m_intensity->setSuffix(QString());
         m_color->setColor(glm::vec3(0.0f));
         for (QWidget* w :
             std::initializer_list<QWidget*> { m_directionLabel, m_directionRow, m_spotLabel, m_spotRow,

@@ -13,6 +13,7 @@ namespace vct::ui {
 namespace {
 
 enum Column { PassColumn, ActionColumn, ReasonColumn, GpuColumn, ColumnCount };
+constexpr int kVisibleRows = 12; ///< rows the pass table shows without scrolling
 
 QTableWidgetItem* makeItem(const QString& text, Qt::Alignment alignment = Qt::AlignLeft | Qt::AlignVCenter)
 {
@@ -52,7 +53,12 @@ StatsDock::StatsDock(QWidget* parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setAlternatingRowColors(true);
-    m_table->setWordWrap(false);
+    // Reasons wrap rather than being cut at the panel's edge, and the table shows every pass of a frame
+    // without scrolling (the pipeline has about a dozen).
+    m_table->setWordWrap(true);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height()
+        + kVisibleRows * (m_table->fontMetrics().height() + 4) + 2 * m_table->frameWidth());
     QHeaderView* header = m_table->horizontalHeader();
     header->setSectionResizeMode(PassColumn, QHeaderView::ResizeToContents);
     header->setSectionResizeMode(ActionColumn, QHeaderView::ResizeToContents);

@@ -15,6 +15,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -572,6 +573,10 @@ void TstDocks::statsDockShowsRows()
     QCOMPARE(table->item(1, 1)->text(), QStringLiteral("reused"));
     QCOMPARE(table->item(1, 2)->text(), QStringLiteral("inputs unchanged"));
     QCOMPARE(table->item(0, 3)->text(), QStringLiteral("1.250"));
+    // A dozen passes show without scrolling, and a long reason wraps instead of being cut.
+    QVERIFY(table->minimumHeight()
+        >= table->horizontalHeader()->sizeHint().height() + 12 * table->fontMetrics().height());
+    QVERIFY(table->wordWrap());
     QCOMPARE(child<QLabel>(&dock, "totalGpuLabel")->text(), QStringLiteral("3.750 ms"));
     QCOMPARE(child<QLabel>(&dock, "voxelMemoryLabel")->text(), QStringLiteral("16.0 MiB"));
     QVERIFY(child<QLabel>(&dock, "voxelGridLabel")->text().startsWith(QStringLiteral("128³")));
