@@ -52,9 +52,16 @@ ViewportOverlay::ViewportOverlay(QWidget* parent, const doc::Document* document)
     setFocusPolicy(Qt::NoFocus);
 }
 
+void ViewportOverlay::setBusy(const QString& text)
+{
+    m_busy = text;
+    update();
+}
+
 void ViewportOverlay::showFrame(const render::FrameStats& stats, bool interactive, const QRect& image)
 {
     m_image = image;
+    m_busy.clear();
     QStringList busy;
     for (const render::PassStats& pass : stats.passes)
         if (pass.name == "voxelize" && pass.action == "run")
@@ -193,6 +200,15 @@ void ViewportOverlay::paintEvent(QPaintEvent*)
         }
     }
 
+    if (!m_busy.isEmpty()) {
+        const QRectF box
+            = painter.boundingRect(QRectF(m_image), Qt::AlignCenter, m_busy).adjusted(-12, -8, 12, 8);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(0, 0, 0, 170));
+        painter.drawRoundedRect(box, 4, 4);
+        painter.setPen(Qt::white);
+        painter.drawText(box, Qt::AlignCenter, m_busy);
+    }
     if (m_status.isEmpty())
         return;
     const QRectF text = painter.boundingRect(QRectF(m_image.left() + 8, m_image.bottom() - 200, 400, 192),

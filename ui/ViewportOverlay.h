@@ -34,6 +34,9 @@ public:
 
     /** The figures and state of the frame just drawn, into the rectangle `image` (widget pixels). */
     void showFrame(const render::FrameStats& stats, bool interactive, const QRect& image);
+    /** A message in the middle of the view until the next frame is shown (a rebuild that takes a while). */
+    void setBusy(const QString& text);
+    QString busyText() const { return m_busy; }
     /** The text in the corner: frame size and GPU time, voxel grid and memory, and what is being rebuilt. */
     QString statusText() const { return m_status; }
     /** Where each light in front of the camera gets its icon, widget pixels. */
@@ -53,6 +56,7 @@ private:
     const doc::Document* m_document;
     QRect m_image;
     QString m_status;
+    QString m_busy;
 };
 
 } // namespace vct::ui

@@ -74,6 +74,15 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
         }
         if (event.kind == Kind::Reset || event.kind == Kind::Camera)
             m_knownCamera = camera;
+        // These rebuild the voxels, which can take seconds on a fine grid: say so before the frame that
+        // blocks, so the window does not just freeze.
+        if (m_renderer
+            && (event.kind == Kind::Reset || event.kind == Kind::Structure || event.kind == Kind::Settings)) {
+            m_overlay->setBusy(tr("Rebuilding the voxels…"));
+            m_overlay->repaint();
+            QTimer::singleShot(0, this, qOverload<>(&QWidget::update));
+            return;
+        }
         update();
     });
 }

@@ -470,6 +470,16 @@ void EditorTest::overlayShowsSelectionLightsAndFigures()
         overlay->statusText().contains(QStringLiteral("re-voxelizing")), qPrintable(overlay->statusText()));
     m_window->document()->undoStack()->undo();
     QVERIFY(waitForFrame());
+
+    // A rebuild says so before the frame that blocks, and the message goes with that frame.
+    render::RenderSettings settings = m_window->document()->state().settings;
+    settings.voxelResolution = settings.voxelResolution == 32 ? 64 : 32;
+    m_window->document()->setSettings(settings);
+    QCOMPARE(overlay->busyText(), QStringLiteral("Rebuilding the voxels…"));
+    QVERIFY(waitForFrame());
+    QVERIFY(overlay->busyText().isEmpty());
+    m_window->document()->undoStack()->undo();
+    QVERIFY(waitForFrame());
 }
 
 #include "tst_Editor.moc"
