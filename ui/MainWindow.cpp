@@ -336,7 +336,7 @@ void MainWindow::buildMenus()
     about->setMenuRole(QAction::AboutRole);
 }
 
-void MainWindow::openInitial(const QString& specOrProject, float unitScale)
+void MainWindow::openInitial(const QString& specOrProject, float unitScale, doc::SceneLoader::UpAxis up)
 {
     const QString recovery = recoveryPath();
     if (QFileInfo::exists(recovery) && dialogsAllowed()) {
@@ -350,7 +350,7 @@ void MainWindow::openInitial(const QString& specOrProject, float unitScale)
     QString error;
     const bool ok = specOrProject.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)
         ? m_document->openProject(specOrProject, &error)
-        : m_document->newFromScene(specOrProject, &error, unitScale);
+        : m_document->newFromScene(specOrProject, &error, unitScale, up);
     if (!ok) {
         showError(tr("Open"), error);
         m_document->newFromScene(QStringLiteral("builtin:default"), &error);
@@ -456,11 +456,27 @@ bool MainWindow::askUnitScale(const QString& path, float* unitScale)
 void MainWindow::importModelAskingUnit(const QString& path)
 {
     float unitScale = 1.0f;
-    if (askUnitScale(path, &unitScale))
-        importModel(path, unitScale);
+    doc::SceneLoader::UpAxis up = doc::SceneLoader::UpAxis::Y;
+    if (askUnitScale(path, &unitScale) && askUpAxis(path, &up))
+        importModel(path, unitScale, up);
 }
 
-bool MainWindow::importModel(const QString& path, float unitScale)
+bool MainWindow::askUpAxis(const QString& path, doc::SceneLoader::UpAxis* up)
+{
+    *up = doc::SceneLoader::UpAxis::Y;
+    if (!dialogsAllowed())
+        return true;
+    const QStringList items { tr("Y (glTF, FBX, most OBJ)"), tr("Z (CAD tools, 3ds Max, some exports)") };
+    bool ok = false;
+    const QString item = QInputDialog::getItem(this, tr("Import model"),
+        tr("The axis that points up in %1:").arg(QFileInfo(path).fileName()), items, 0, false, &ok);
+    if (!ok)
+        return false;
+    *up = items.indexOf(item) == 1 ? doc::SceneLoader::UpAxis::Z : doc::SceneLoader::UpAxis::Y;
+    return true;
+}
+
+bool MainWindow::importModel(const QString& path, float unitScale, doc::SceneLoader::UpAxis up)
 {
     // Assimp may take seconds on a big model: it runs on a worker thread while a dialog shows progress.
     // Cancel closes the dialog at once and throws the result away when the worker finishes (Assimp has no
@@ -497,7 +513,7 @@ bool MainWindow::importModel(const QString& path, float unitScale)
         showError(tr("Import model"), loaded.error);
         return false;
     }
-    m_document->addImportedModel(path, std::move(loaded.scene), unitScale);
+    m_document->addImportedModel(path, std::move(loaded.scene), unitScale, up);
     statusBar()->showMessage(tr("Imported %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
 }

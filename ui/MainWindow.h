@@ -1,5 +1,7 @@
 #pragma once
 
+#include "document/SceneLoader.h"
+
 #include <QMainWindow>
 #include <QTimer>
 
@@ -38,7 +40,8 @@ public:
      * Opens a project (.vctproj) or starts from a scene spec; offers recovery after a crash first.
      * `unitScale` is metres per unit of a model file.
      */
-    void openInitial(const QString& specOrProject, float unitScale = 1.0f);
+    void openInitial(const QString& specOrProject, float unitScale = 1.0f,
+        doc::SceneLoader::UpAxis up = doc::SceneLoader::UpAxis::Y);
     doc::Document* document() const { return m_document; }
     ViewportWidget* viewport() const { return m_viewport; }
     MaterialDock* materialDock() const { return m_materialDock; }
@@ -65,7 +68,8 @@ public:
     bool openProject(const QString& path);
     bool saveProjectAs(const QString& path);
     /** Imports on a worker thread behind a progress dialog; `unitScale` is metres per model unit. */
-    bool importModel(const QString& path, float unitScale = 1.0f);
+    bool importModel(const QString& path, float unitScale = 1.0f,
+        doc::SceneLoader::UpAxis up = doc::SceneLoader::UpAxis::Y);
     /** Renders at `size` pixels (empty: the view's own) with converged light and writes `path`. */
     bool exportImage(const QString& path, QSize size = {});
     /**
@@ -87,6 +91,8 @@ private:
     bool maybeSave();
     /** Asks the metres in one unit of the model at `path` (1 without dialogs); false if cancelled. */
     bool askUnitScale(const QString& path, float* unitScale);
+    /** Asks which axis of the model at `path` points up (Y without dialogs); false if cancelled. */
+    bool askUpAxis(const QString& path, doc::SceneLoader::UpAxis* up);
     /** File > Import model and a dropped model: asks the unit, then imports. */
     void importModelAskingUnit(const QString& path);
     bool save();

@@ -201,6 +201,11 @@ int RenderCommand::run(int argc, char** argv)
                        "its NAME.lights.json and NAME.camera.json are in its units too; --camera and "
                        "--lights files stay in metres. Default 1."),
         QStringLiteral("S"));
+    const QCommandLineOption upAxisOption(QStringLiteral("up-axis"),
+        QStringLiteral(
+            "The axis that points up in a model file SCENE: y (default) or z (CAD tools, 3ds Max and "
+            "many exports); its lights and camera files are in its axes too."),
+        QStringLiteral("AXIS"));
     const QCommandLineOption sceneRootOption(QStringLiteral("scene-root"),
         QStringLiteral("The folder a project's relative model paths resolve against, instead of the "
                        "project's (default: $%1 when set).")
@@ -208,7 +213,7 @@ int RenderCommand::run(int argc, char** argv)
         QStringLiteral("DIR"));
     parser.addOptions({ cameraOption, lightsOption, widthOption, heightOption, outOption, voxelOption,
         setOption, statsOption, framesOption, checkFiniteOption, glOption, referenceOption, sppOption,
-        maxBouncesOption, seedOption, threadsOption, unitScaleOption, sceneRootOption });
+        maxBouncesOption, seedOption, threadsOption, unitScaleOption, upAxisOption, sceneRootOption });
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -230,6 +235,14 @@ int RenderCommand::run(int argc, char** argv)
             !problem.isEmpty())
             return fail(1, QStringLiteral("--unit-scale: %1").arg(problem));
     }
+    doc::SceneLoader::UpAxis upAxis = doc::SceneLoader::UpAxis::Y;
+    if (parser.isSet(upAxisOption)) {
+        if (isProject || sceneSpec.startsWith(QStringLiteral("builtin:")))
+            return fail(1, QStringLiteral("--up-axis applies to a model file"));
+        if (const QString problem = doc::SceneLoader::parseUpAxis(parser.value(upAxisOption), &upAxis);
+            !problem.isEmpty())
+            return fail(1, QStringLiteral("--up-axis: %1").arg(problem));
+    }
     if (parser.isSet(sceneRootOption) && !isProject)
         std::fprintf(
             stderr, "vct-render: warning: --scene-root is ignored: only a project's model paths use it\n");
@@ -241,6 +254,12 @@ int RenderCommand::run(int argc, char** argv)
     // A project brings its own settings and camera; --set and --camera still override them.
     if (!loadSceneInput(sceneSpec, scene, settings, info, &error, unitScale, parser.value(sceneRootOption)))
         return fail(1, error);
+    if (upAxis != doc::SceneLoader::UpAxis::Y) {
+        scene = doc::SceneLoader::uprightScene(std::move(scene), upAxis);
+        // A camera of the loader's own framed the model lying on its side: frame it upright.
+        if (!info.hasCameraFile)
+            scene.camera = doc::SceneLoader::frameScene(scene);
+    }
     if (scene.origin != glm::dvec3(0.0))
         std::printf(
             "%s lies far from the world's origin: rendered about a local origin at (%.3f, %.3f, %.3f) m\n",

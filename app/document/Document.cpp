@@ -21,6 +21,7 @@
 #include <QtDebug>
 
 #include <algorithm>
+#include <optional>
 
 namespace vct::doc {
 
@@ -170,6 +171,25 @@ std::vector<SceneNode> nodesFromScene(
     return nodes;
 }
 
+/**
+ * Nodes and lights of a model whose up axis is `up`, stood upright: each node turned by its placement (a
+ * rotation the Transform panel shows and the project keeps), each light with them.
+ */
+void standUpright(std::vector<SceneNode>& nodes, std::vector<LightNode>& lights, SceneLoader::UpAxis up)
+{
+    if (up == SceneLoader::UpAxis::Y)
+        return;
+    // NodeTransform applies T * Rz * Ry * Rx * S: fresh nodes turned -90 degrees about x alone are exactly
+    // SceneLoader::uprightRotation().
+    for (SceneNode& node : nodes)
+        node.transform.rotationDeg.x -= 90.0f;
+    const glm::mat3 turn(SceneLoader::uprightRotation(up));
+    for (LightNode& light : lights) {
+        light.position = turn * light.position;
+        light.direction = turn * light.direction;
+    }
+}
+
 } // namespace
 
 Document::Document(QObject* parent)
@@ -189,11 +209,12 @@ Document::~Document()
     m_undoStack.clear();
 }
 
-bool Document::newFromScene(const QString& spec, QString* error, float unitScale)
+bool Document::newFromScene(const QString& spec, QString* error, float unitScale, SceneLoader::UpAxis up)
 {
     const SceneSource source { normalizedSpec(spec), unitScale };
     render::Scene scene;
-    if (!SceneLoader::load(source.spec, scene, error, nullptr, unitScale))
+    SceneLoadInfo info;
+    if (!SceneLoader::load(source.spec, scene, error, &info, unitScale))
         return false;
 
     DocumentState state;
@@ -202,16 +223,25 @@ bool Document::newFromScene(const QString& spec, QString* error, float unitScale
     // Source 0's textures come first in the concatenation, so its texture indices stand as they are.
     state.materials = scene.materials;
     state.lights = lightsFromScene(scene, {}, &state.nextId);
-    state.camera = scene.camera;
+    standUpright(state.nodes, state.lights, up);
+    // The scene as the document shows it: the cached geometry stays as the file has it, the nodes turn it.
+    std::optional<render::Scene> turned;
+    if (up != SceneLoader::UpAxis::Y) {
+        turned = SceneLoader::uprightScene(scene, up);
+        if (!info.hasCameraFile)
+            turned->camera = SceneLoader::frameScene(*turned);
+    }
+    const render::Scene& shown = turned ? *turned : scene;
+    state.camera = shown.camera;
     m_openNote.clear();
     // A model that brings no light would open black: give it one and say so. Under a roof a sun would not
     // reach the camera, so there it is a point light where the camera looks.
     if (!source.spec.startsWith(QStringLiteral("builtin:")) && state.lights.empty()
         && !scene.hasEmissiveMaterial()) {
-        const bool inside = Enclosure::encloses(scene, scene.camera.position)
-            && Enclosure::roofed(scene, scene.camera.position);
+        const bool inside = Enclosure::encloses(shown, shown.camera.position)
+            && Enclosure::roofed(shown, shown.camera.position);
         LightNode light = NewLight::make(
-            inside ? LightType::Point : LightType::Directional, scene.bounds(), scene.camera.lookAt, {});
+            inside ? LightType::Point : LightType::Directional, shown.bounds(), shown.camera.lookAt, {});
         light.id = state.nextId++;
         light.name = QStringLiteral("%1 light 1").arg(lightKindName(light.type));
         state.lights.push_back(light);
@@ -332,17 +362,18 @@ bool Document::saveProject(const QString& path, QString* error)
     return true;
 }
 
-bool Document::importModel(const QString& path, QString* error, float unitScale)
+bool Document::importModel(const QString& path, QString* error, float unitScale, SceneLoader::UpAxis up)
 {
     const SceneSource source { normalizedSpec(path), unitScale };
     render::Scene scene;
     if (m_geometry.find(geometryKey(source)) == m_geometry.end()
         && !SceneLoader::load(source.spec, scene, error, nullptr, unitScale))
         return false;
-    return addImportedModel(path, std::move(scene), unitScale);
+    return addImportedModel(path, std::move(scene), unitScale, up);
 }
 
-bool Document::addImportedModel(const QString& path, render::Scene loaded, float unitScale)
+bool Document::addImportedModel(
+    const QString& path, render::Scene loaded, float unitScale, SceneLoader::UpAxis up)
 {
     // The document could not save or reopen such a source.
     if (const QString problem = SceneLoader::unitScaleProblem(unitScale); !problem.isEmpty()) {
@@ -365,6 +396,7 @@ bool Document::addImportedModel(const QString& path, render::Scene loaded, float
     std::vector<SceneNode> nodes
         = nodesFromScene(scene, int(m_state.sources.size()), int(m_state.materials.size()), &nextId);
     std::vector<LightNode> lights = lightsFromScene(scene, m_state.lights, &nextId);
+    standUpright(nodes, lights, up);
     m_undoStack.push(new ImportModelCommand(
         this, source, std::move(materials), std::move(nodes), std::move(lights), nextId));
     return true;

@@ -5,6 +5,7 @@
 #include "LightField.h"
 #include "MaterialField.h"
 #include "NodeTransformField.h"
+#include "SceneLoader.h"
 
 #include "scene/Scene.h"
 
@@ -34,9 +35,11 @@ public:
 
     /**
      * Starts a new untitled document from a scene spec (builtin:NAME or a model path). Clears undo.
-     * `unitScale` is metres per unit of a model file (SceneLoader::load).
+     * `unitScale` is metres per unit of a model file (SceneLoader::load); a model whose up axis `up` is not
+     * ours is stood upright by its nodes' placement (a rotation the Transform panel shows).
      */
-    bool newFromScene(const QString& spec, QString* error, float unitScale = 1.0f);
+    bool newFromScene(const QString& spec, QString* error, float unitScale = 1.0f,
+        SceneLoader::UpAxis up = SceneLoader::UpAxis::Y);
     /**
      * Opens a .vctproj. On failure the open document is untouched and `error` names the file and problem. A
      * project without nodes and materials gets one node per mesh of each source and the sources' materials,
@@ -58,14 +61,17 @@ public:
     bool saveProject(const QString& path, QString* error);
     /**
      * Adds a model's meshes, materials and lights as one undoable step; `unitScale` is metres per model
-     * unit. The same file at another scale is another source.
+     * unit. The same file at another scale is another source. A model whose up axis `up` is not ours is
+     * stood upright by its nodes' placement.
      */
-    bool importModel(const QString& path, QString* error, float unitScale = 1.0f);
+    bool importModel(const QString& path, QString* error, float unitScale = 1.0f,
+        SceneLoader::UpAxis up = SceneLoader::UpAxis::Y);
     /**
      * The second half of importModel, for a model already loaded with SceneLoader at `unitScale` (on a
      * worker thread, so the UI stays responsive): adds it as one undoable step. False for an unusable scale.
      */
-    bool addImportedModel(const QString& path, render::Scene loaded, float unitScale = 1.0f);
+    bool addImportedModel(const QString& path, render::Scene loaded, float unitScale = 1.0f,
+        SceneLoader::UpAxis up = SceneLoader::UpAxis::Y);
 
     QString filePath() const { return m_filePath; }
     /** What the last newFromScene() added on its own (a light for a model that brought none), for the status

@@ -141,6 +141,51 @@ render::Scene SceneLoader::scaledScene(render::Scene scene, float unitScale)
     return scene;
 }
 
+glm::mat4 SceneLoader::uprightRotation(UpAxis up)
+{
+    // Z-up to Y-up: +z becomes +y and +y becomes -z, so x stays and handedness is kept.
+    return up == UpAxis::Z ? glm::rotate(glm::mat4(1.0f), glm::radians(-90.0f), glm::vec3(1.0f, 0.0f, 0.0f))
+                           : glm::mat4(1.0f);
+}
+
+render::Scene SceneLoader::uprightScene(render::Scene scene, UpAxis up)
+{
+    if (up == UpAxis::Y)
+        return scene;
+    const glm::mat4 turn = uprightRotation(up);
+    const glm::mat3 turn3(turn);
+    for (render::Mesh& mesh : scene.meshes)
+        mesh.transform = turn * mesh.transform;
+    for (render::PointLight& light : scene.pointLights) {
+        light.position = turn3 * light.position;
+        light.spotDirection = turn3 * light.spotDirection;
+    }
+    for (render::DirectionalLight& light : scene.directionalLights)
+        light.direction = turn3 * light.direction;
+    for (render::SurfaceLight& light : scene.surfaceLights) {
+        light.centre = turn3 * light.centre;
+        light.direction = turn3 * light.direction;
+    }
+    scene.camera.position = turn3 * scene.camera.position;
+    scene.camera.lookAt = turn3 * scene.camera.lookAt;
+    scene.camera.up = turn3 * scene.camera.up;
+    return scene;
+}
+
+QString SceneLoader::parseUpAxis(const QString& text, UpAxis* up)
+{
+    const QString axis = text.trimmed().toLower();
+    if (axis == QLatin1String("y") || axis == QLatin1String("+y")) {
+        *up = UpAxis::Y;
+        return {};
+    }
+    if (axis == QLatin1String("z") || axis == QLatin1String("+z")) {
+        *up = UpAxis::Z;
+        return {};
+    }
+    return QStringLiteral("expected the axis that points up in the model, y or z, not '%1'").arg(text);
+}
+
 QString SceneLoader::unitScaleProblem(float unitScale)
 {
     if (std::isfinite(unitScale) && unitScale > 0.0f)

@@ -24,6 +24,9 @@ class SceneLoader {
 public:
     static constexpr float kFramingFovYDeg = 40.0f;
 
+    /** Which axis of a model file points up. We are Y-up; CAD tools, 3ds Max and many exports are Z-up. */
+    enum class UpAxis { Y, Z };
+
     /** Whether a model far from the world's origin is moved to a local one (SceneRebase). */
     enum class Origin {
         Keep, ///< Coordinates as the files give them: a document whose sources must share one frame.
@@ -46,6 +49,15 @@ public:
      * intensities and radiances are physical quantities that do not depend on the unit, so they stay.
      */
     static render::Scene scaledScene(render::Scene scene, float unitScale);
+    /**
+     * `scene`, whose up axis is `up`, turned Y-up: a rotation of -90 degrees about x for Z-up, applied to
+     * mesh transforms, light positions and directions and the camera. Nothing changes for Y-up.
+     */
+    static render::Scene uprightScene(render::Scene scene, UpAxis up);
+    /** The rotation uprightScene() applies. */
+    static glm::mat4 uprightRotation(UpAxis up);
+    /** An up axis as a command line or dialog gives it ("y", "z"): empty on success, else the problem. */
+    static QString parseUpAxis(const QString& text, UpAxis* up);
     /** Empty when `unitScale` can scale a model (finite and positive), else the problem. */
     static QString unitScaleProblem(float unitScale);
     /** A unit scale as a command line gives it ("0.01"): empty on success, else the problem. */

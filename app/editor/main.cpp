@@ -57,7 +57,10 @@ int main(int argc, char** argv)
                        "instead of each project's (default: $%1 when set).")
             .arg(QLatin1String(vct::doc::ProjectFile::kModelRootVariable)),
         QStringLiteral("DIR"));
-    parser.addOptions({ screenshot, inspect, unitScaleOption, sceneRootOption });
+    const QCommandLineOption upAxisOption(QStringLiteral("up-axis"),
+        QStringLiteral("The axis that points up in a model file: y (default) or z (CAD tools, 3ds Max)."),
+        QStringLiteral("AXIS"));
+    parser.addOptions({ screenshot, inspect, unitScaleOption, upAxisOption, sceneRootOption });
     parser.process(app);
 
     const QStringList scenes = parser.positionalArguments();
@@ -75,6 +78,15 @@ int main(int argc, char** argv)
             !problem.isEmpty())
             return fail(QStringLiteral("--unit-scale: %1").arg(problem));
     }
+    vct::doc::SceneLoader::UpAxis upAxis = vct::doc::SceneLoader::UpAxis::Y;
+    if (parser.isSet(upAxisOption)) {
+        if (scene.endsWith(QStringLiteral(".vctproj"), Qt::CaseInsensitive)
+            || scene.startsWith(QStringLiteral("builtin:")))
+            return fail(QStringLiteral("--up-axis applies to a model file"));
+        if (const QString problem = vct::doc::SceneLoader::parseUpAxis(parser.value(upAxisOption), &upAxis);
+            !problem.isEmpty())
+            return fail(QStringLiteral("--up-axis: %1").arg(problem));
+    }
     const bool rootFromOption = parser.isSet(sceneRootOption);
     const QString sceneRoot = rootFromOption
         ? parser.value(sceneRootOption)
@@ -87,7 +99,7 @@ int main(int argc, char** argv)
 
     vct::ui::MainWindow window;
     window.document()->setModelRoot(sceneRoot);
-    window.openInitial(scene, unitScale);
+    window.openInitial(scene, unitScale, upAxis);
     if (parser.isSet(inspect))
         window.inspectorDock()->setSettings(
             { true, parser.value(inspect).toInt(), vct::render::VoxelChannel::Radiance });

@@ -280,6 +280,57 @@ private slots:
         QVERIFY(!document.newFromScene(QStringLiteral("builtin:cornell"), &error, 0.01f));
         QCOMPARE(document.state().sources[0].unitScale, 0.01f); // the open document stays
     }
+
+    // A Z-up model (CAD, 3ds Max) stands upright: its floor faces +y, its lights and camera turn with it, on
+    // the command line's path (SceneLoader) and in the editor (the nodes' placement, which the project
+    // keeps).
+    void zUpModelStandsUpright()
+    {
+        const QString dir = test::outputDir() + QStringLiteral("/up-axis");
+        QDir(dir).removeRecursively();
+        // A 2 x 4 m floor in the xy plane and a wall 3 m up along +z at y = 2.
+        const QString model = test::writeFile(dir + QStringLiteral("/zup.obj"),
+            "v -1 -2 0\nv 1 -2 0\nv 1 2 0\nv -1 2 0\nf 1 2 3\nf 1 3 4\n"
+            "v -1 2 0\nv 1 2 0\nv 1 2 3\nf 5 6 7\n");
+        test::writeFile(dir + QStringLiteral("/zup.lights.json"),
+            R"({"lights": [{"type": "spot", "position": [0, 0, 2.5], "direction": [0, 0, -1], "intensity": [3, 3, 3],
+  "inner_deg": 20, "outer_deg": 30}]})");
+        test::writeFile(dir + QStringLiteral("/zup.camera.json"),
+            R"({"position": [0, -6, 1.5], "look_at": [0, 0, 1], "up": [0, 0, 1], "fov_y_deg": 40, "width": 32, "height": 32})");
+
+        render::Scene scene;
+        QString error;
+        QVERIFY2(doc::SceneLoader::load(model, scene, &error), qPrintable(error));
+        const render::Scene upright = doc::SceneLoader::uprightScene(scene, doc::SceneLoader::UpAxis::Z);
+        const render::Aabb bounds = upright.bounds();
+        QVERIFY(near(bounds.min, glm::vec3(-1.0f, 0.0f, -2.0f), 1e-5f));
+        QVERIFY(near(bounds.max, glm::vec3(1.0f, 3.0f, 2.0f), 1e-5f));
+        const glm::vec3 floorNormal = glm::mat3(upright.meshes[0].transform) * upright.meshes[0].normals[0];
+        QVERIFY2(
+            near(floorNormal, glm::vec3(0.0f, 1.0f, 0.0f), 1e-5f), qPrintable(test::describe(floorNormal)));
+        QVERIFY(near(upright.pointLights[0].position, glm::vec3(0.0f, 2.5f, 0.0f), 1e-5f));
+        QVERIFY(near(upright.pointLights[0].spotDirection, glm::vec3(0.0f, -1.0f, 0.0f), 1e-5f));
+        QVERIFY(near(upright.camera.up, glm::vec3(0.0f, 1.0f, 0.0f), 1e-5f));
+        QVERIFY(near(upright.camera.position, glm::vec3(0.0f, 1.5f, 6.0f), 1e-5f));
+        doc::SceneLoader::UpAxis axis = doc::SceneLoader::UpAxis::Y;
+        QVERIFY(doc::SceneLoader::parseUpAxis(QStringLiteral("Z"), &axis).isEmpty());
+        QVERIFY(axis == doc::SceneLoader::UpAxis::Z);
+        QVERIFY(!doc::SceneLoader::parseUpAxis(QStringLiteral("w"), &axis).isEmpty());
+
+        // The editor: the same floor, stood up by the nodes' rotation, which survives a save and reopen.
+        doc::Document document;
+        QVERIFY2(document.newFromScene(model, &error, 1.0f, doc::SceneLoader::UpAxis::Z), qPrintable(error));
+        QCOMPARE(document.state().nodes.front().transform.rotationDeg, glm::vec3(-90.0f, 0.0f, 0.0f));
+        const render::Aabb shown = document.sceneBounds();
+        QVERIFY(near(shown.min, bounds.min, 1e-5f) && near(shown.max, bounds.max, 1e-5f));
+        QVERIFY(near(document.state().lights[0].position, glm::vec3(0.0f, 2.5f, 0.0f), 1e-5f));
+        QVERIFY(near(document.state().camera.position, glm::vec3(0.0f, 1.5f, 6.0f), 1e-5f));
+        const QString project = dir + QStringLiteral("/zup.vctproj");
+        QVERIFY2(document.saveProject(project, &error), qPrintable(error));
+        doc::Document reopened;
+        QVERIFY2(reopened.openProject(project, &error), qPrintable(error));
+        QVERIFY(near(reopened.sceneBounds().max, bounds.max, 1e-5f));
+    }
 };
 
 QTEST_GUILESS_MAIN(tst_UnitScale)
