@@ -46,8 +46,8 @@ void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& r
     lister.set("uRegionOrigin", region.lo);
     lister.set("uRegionSize", size);
     lister.set("uGroupSize", kGroupSize);
-    // The lister's own work-group size: on llvmpipe each group costs a fixed overhead, and 8^3 groups
-    // instead of 4^3 took the listing of the atrium's 128^3 grid from ~80 ms to ~30 ms.
+    // The lister's own work-group size: on llvmpipe each group costs a fixed overhead, so 8^3 groups list a
+    // grid far faster than 4^3 (docs/DESIGN.md, "Measured choices").
     GLint local[3] = { 1, 1, 1 };
     glGetProgramiv(lister.id(), GL_COMPUTE_WORK_GROUP_SIZE, local);
     const glm::ivec3 groupSize(local[0], local[1], local[2]);

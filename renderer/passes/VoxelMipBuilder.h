@@ -16,8 +16,8 @@ class ShaderLibrary;
  * radiance) and the bounce pass (the volume after a second bounce), so both filter identically.
  *
  * Only the cells above occupied voxels are filtered; the rest of each level is cleared. Most of a grid is
- * empty, and on llvmpipe a clear costs far less than a shader's stores (atrium, 128^3: directional mips
- * 46 -> 11 ms). listCells() finds those cells; build the chains after it.
+ * empty, and on llvmpipe a clear costs far less than a shader's stores (docs/DESIGN.md, "Measured choices").
+ * listCells() finds those cells; build the chains after it.
  */
 class VoxelMipBuilder {
 public:

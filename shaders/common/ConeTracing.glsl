@@ -17,7 +17,7 @@ layout(binding = 5) uniform sampler3D uRadiance;
 // The six chains are tiles of one texture stacked along z (+x, -x, +y, -y, +z, -z; VoxelVolume::directional),
 // tile k from z = 2k tiles, empty gaps between: a cone picks its side of each axis by coordinate. With six
 // samplers, picking per pixel fetched from both sides of every axis: the cone pass took 1.7 times as long
-// (atrium, 640x360, every pixel, no cache: 1688 ms against 987 ms).
+// (docs/DESIGN.md, "Measured choices").
 layout(binding = 6) uniform sampler3D uTowards;
 
 // Chain `tile` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a texture of its own has.

@@ -1,5 +1,5 @@
-// The g-buffer (passes/GBufferPass): one RGBA32UI texel per pixel. Each colour target of the g-buffer cost
-// llvmpipe ~12 ms at 1280x720 whatever its format, so everything a pixel's shading needs shares one:
+// The g-buffer (passes/GBufferPass): one RGBA32UI texel per pixel. Each colour target of the g-buffer costs
+// llvmpipe the same whatever its format (docs/DESIGN.md), so everything a pixel's shading needs shares one:
 //   x  shading normal facing the camera, octahedral, two 16-bit snorms
 //   y  linear albedo, 10 bits per channel, and the front-face bit
 //   z  material index + 1 (the material table, common/MaterialTable.glsl); 0 = no surface, the sky

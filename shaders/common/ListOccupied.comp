@@ -1,8 +1,7 @@
 // Lists the cells (uCellSize^3 voxels; 1 = single voxels) of a region that hold any surface, for a heavy pass
 // to run over with glDispatchComputeIndirect (core/OccupiedCellList). Heavy passes are split this way because llvmpipe runs a compute shader that
 // holds lighting or cone-tracing code about four times slower per invocation even where that code is skipped
-// (light injection on the atrium: 183 ms for the grid in one shader, 54 ms without the lighting code), and
-// most of a grid is empty.
+// (docs/DESIGN.md, "Measured choices"), and most of a grid is empty.
 #include "common/AppendCell.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 8) in;

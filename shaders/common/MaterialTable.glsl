@@ -1,8 +1,8 @@
 // What the g-buffer does not store per pixel: the material's specular lobe and emission, looked up through
-// the material index the g-buffer keeps (common/GBufferSurface.glsl: index + 1; 0 = no geometry). Two fewer render targets
-// took the atrium's g-buffer pass (1280x720, llvmpipe) from ~85 to ~70 ms. Filled by core/GpuScene.
-// A buffer texture rather than a shader storage buffer: with the storage buffer the composite ran ~9 ms
-// slower and gave most of that back.
+// the material index the g-buffer keeps (common/GBufferSurface.glsl: index + 1; 0 = no geometry): two fewer
+// render targets, and each costs llvmpipe a fixed share of the g-buffer pass. Filled by core/GpuScene.
+// A buffer texture rather than a shader storage buffer: with the storage buffer the composite was slower and
+// gave most of the gain back (docs/DESIGN.md, "Measured choices").
 struct MaterialEntry {
     vec4 specularShininess; // specular reflectance rgb, Phong exponent (0 = not glossy)
     vec4 emission;          // emitted radiance rgb, W/(m^2 sr), front faces only

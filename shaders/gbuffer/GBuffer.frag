@@ -3,7 +3,7 @@ in vec3 vNormal;
 in vec2 vUv;
 
 // TEXTURED: the variant for materials with an albedo texture (passes/GBufferPass); the others skip the fetch,
-// which cost the atrium's untextured g-buffer ~17 ms at 1280x720.
+// which cost an untextured g-buffer a fifth of its time (docs/DESIGN.md, "Measured choices").
 #define GBUFFER_WRITER
 #include "common/GBufferSurface.glsl"
 

@@ -1,6 +1,6 @@
 // Lists the cells requested this frame (irradiance/RequestCells.frag) that hold voxels, for the gather to run
 // over (core/OccupiedCellList). Cells without voxels stay out of the gather: there they would still take a
-// lane of its SIMD groups (atrium: 9,265 requested cells, 5,508 with voxels; gather 150 -> 89 ms).
+// lane of its SIMD groups (docs/DESIGN.md, "Measured choices").
 // Over the whole cell grid in 8^3 work groups, marking every requested cell gathered, which lists the cells
 // in grid order; with FROM_LIST over the cells the request pass listed itself (its LIST_NEW variant, common/
 // OccupiedCells.glsl), which costs nothing when a camera move brings few new cells into view.

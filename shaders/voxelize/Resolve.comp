@@ -1,6 +1,6 @@
 // Turns the sums of the voxels fragments reached into averages, and zeroes those sums for the next
-// voxelization: the atlas is all zeros between passes, so no pass has to clear it (~12 ms for the atrium's
-// 128^3 atlas). The voxelizer listed these voxels as it reached them; the pass has already written every
+// voxelization: the atlas is all zeros between passes, so no pass has to clear it (a clear of the whole atlas
+// costs a noticeable share of a voxelization: docs/DESIGN.md, "Measured choices"). The voxelizer listed these voxels as it reached them; the pass has already written every
 // other voxel of the region (the static layer's values when merging, so a moving object never erases the
 // static scene).
 #include "common/OccupiedCells.glsl"
