@@ -2,7 +2,7 @@
 
 #include "cli/PerfResult.h"
 #include "core/RenderSettings.h"
-#include "core/TrilinearRateProbe.h"
+#include "debug/TrilinearRateProbe.h"
 #include "scene/Scene.h"
 
 #include <map>

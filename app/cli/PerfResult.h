@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/TrilinearRateProbe.h"
 #include "core/VoxelTextureMemory.h"
+#include "debug/TrilinearRateProbe.h"
 
 #include <cstddef>
 #include <cstdint>

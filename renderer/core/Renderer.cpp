@@ -2,13 +2,13 @@
 
 #include "scene/CameraBasis.h"
 
-#include "core/ConeSampleCounter.h"
 #include "core/ConeSet.h"
-#include "core/FiniteCheck.h"
 #include "core/FrameContext.h"
 #include "core/Pipeline.h"
 #include "core/ShaderLibrary.h"
-#include "core/VoxelInspector.h"
+#include "debug/ConeSampleCounter.h"
+#include "debug/FiniteCheck.h"
+#include "debug/VoxelInspector.h"
 #include "gl/DebugOutput.h"
 #include "passes/AreaLightPass.h"
 #include "passes/CompositePass.h"

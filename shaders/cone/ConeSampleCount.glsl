@@ -1,4 +1,4 @@
-// COUNT_SAMPLES: the benchmark-only variant of the cone shaders (vct-bench perf, core/ConeSampleCounter.h)
+// COUNT_SAMPLES: the benchmark-only variant of the cone shaders (vct-bench perf, debug/ConeSampleCounter.h)
 // counts their 3D texture fetches. Each fragment sums its own and adds them once to a 64-bit count kept as
 // two words, so atomics stay few. Include before common/ConeTracing.glsl; call countSamples() at the end.
 #ifdef COUNT_SAMPLES

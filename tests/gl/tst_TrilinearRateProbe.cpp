@@ -1,6 +1,6 @@
 #include "GlTestContext.h"
 
-#include "core/TrilinearRateProbe.h"
+#include "debug/TrilinearRateProbe.h"
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-#include "core/ConeSampleCounter.h"
+#include "debug/ConeSampleCounter.h"
 
 namespace vct::render {
 

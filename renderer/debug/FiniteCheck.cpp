@@ -1,4 +1,4 @@
-#include "core/FiniteCheck.h"
+#include "debug/FiniteCheck.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "core/TrilinearRateProbe.h"
+#include "debug/TrilinearRateProbe.h"
 
 #include "core/ShaderLibrary.h"
 #include "core/VoxelGridFrame.h"

@@ -1,4 +1,4 @@
-#include "core/VoxelInspector.h"
+#include "debug/VoxelInspector.h"
 
 #include <algorithm>
 
