@@ -401,8 +401,8 @@ void LightDock::addLight(doc::LightType type)
     if (!m_document)
         return;
     // The name stays empty: the document numbers new lights per type.
-    m_document->addLight(doc::NewLight::make(type, m_document->buildRenderScene().bounds(),
-        m_document->state().camera.lookAt, m_document->state().lights));
+    m_document->addLight(doc::NewLight::make(
+        type, m_document->sceneBounds(), m_document->state().camera.lookAt, m_document->state().lights));
     setCurrentLight(int(m_document->state().lights.size()) - 1);
 }
 

@@ -1,12 +1,11 @@
 #include "ViewportOverlay.h"
 
 #include "document/Document.h"
+#include "scene/CameraBasis.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <QPainter>
-#include <QPainterPath>
 
 #include <array>
 #include <cmath>
@@ -90,14 +89,17 @@ std::optional<QPointF> ViewportOverlay::project(const glm::vec3& world) const
     if (!m_document || m_image.isEmpty())
         return std::nullopt;
     const render::Camera& camera = m_document->state().camera;
-    const glm::mat4 view = glm::lookAt(camera.position, camera.lookAt, camera.up);
-    const float aspect = float(m_image.width()) / float(m_image.height());
-    const glm::mat4 projection
-        = glm::perspective(glm::radians(camera.fovYDeg), aspect, std::max(camera.nearPlane, 1e-30f), 1e30f);
-    const glm::vec4 clip = projection * view * glm::vec4(world, 1.0f);
-    if (!(clip.w > 0.0f) || !std::isfinite(clip.x) || !std::isfinite(clip.y))
+    const render::CameraBasis basis = render::CameraBasis::of(camera);
+    const glm::vec3 offset = world - camera.position;
+    const float depth = glm::dot(offset, basis.forward);
+    if (!(depth > 0.0f))
         return std::nullopt;
-    const float x = clip.x / clip.w, y = clip.y / clip.w;
+    // CameraBasis::through() backwards: view depth 1 spans tanHalfFovY up and that times the aspect across.
+    const float aspect = float(m_image.width()) / float(m_image.height());
+    const float x = glm::dot(offset, basis.right) / (depth * basis.tanHalfFovY * aspect);
+    const float y = glm::dot(offset, basis.up) / (depth * basis.tanHalfFovY);
+    if (!std::isfinite(x) || !std::isfinite(y))
+        return std::nullopt;
     return QPointF(
         m_image.x() + (0.5 * x + 0.5) * m_image.width(), m_image.y() + (0.5 - 0.5 * y) * m_image.height());
 }

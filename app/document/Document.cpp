@@ -238,8 +238,7 @@ bool Document::newFromScene(const QString& spec, QString* error, float unitScale
     // reach the camera, so there it is a point light where the camera looks.
     if (!source.spec.startsWith(QStringLiteral("builtin:")) && state.lights.empty()
         && !scene.hasEmissiveMaterial()) {
-        const bool inside = Enclosure::encloses(shown, shown.camera.position)
-            && Enclosure::roofed(shown, shown.camera.position);
+        const bool inside = Enclosure::insideRoom(shown, shown.camera.position);
         LightNode light = NewLight::make(
             inside ? LightType::Point : LightType::Directional, shown.bounds(), shown.camera.lookAt, {});
         light.id = state.nextId++;

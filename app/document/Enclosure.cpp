@@ -49,17 +49,10 @@ bool hits(
     return glm::dot(e2, q) * inv > 0.0f;
 }
 
-} // namespace
-
-float Enclosure::hitShare(const render::Scene& scene, const glm::vec3& point, float minY, float maxY)
+/** Which of `rays` from `point` meet a triangle of `scene`. */
+std::vector<bool> raysMet(
+    const render::Scene& scene, const glm::vec3& point, const std::vector<glm::vec3>& rays)
 {
-    static const std::vector<glm::vec3> kSphere = sphere();
-    std::vector<glm::vec3> rays;
-    for (const glm::vec3& d : kSphere)
-        if (d.y >= minY && d.y <= maxY)
-            rays.push_back(d);
-    if (rays.empty())
-        return 0.0f;
     std::vector<bool> met(rays.size(), false);
     std::size_t metCount = 0;
     std::vector<glm::vec3> world;
@@ -78,7 +71,46 @@ float Enclosure::hitShare(const render::Scene& scene, const glm::vec3& point, fl
                 }
         }
     }
-    return float(metCount) / float(rays.size());
+    return met;
+}
+
+/** The sphere's rays with a y component in [minY, maxY]. */
+std::vector<glm::vec3> band(float minY, float maxY)
+{
+    static const std::vector<glm::vec3> kSphere = sphere();
+    std::vector<glm::vec3> rays;
+    for (const glm::vec3& d : kSphere)
+        if (d.y >= minY && d.y <= maxY)
+            rays.push_back(d);
+    return rays;
+}
+
+/** The share of `met` among the rays with a y component in [minY, maxY]; 0 without any. */
+float shareOf(const std::vector<glm::vec3>& rays, const std::vector<bool>& met, float minY, float maxY)
+{
+    int inBand = 0, hit = 0;
+    for (std::size_t r = 0; r < rays.size(); ++r)
+        if (rays[r].y >= minY && rays[r].y <= maxY) {
+            ++inBand;
+            hit += met[r] ? 1 : 0;
+        }
+    return inBand > 0 ? float(hit) / float(inBand) : 0.0f;
+}
+
+} // namespace
+
+float Enclosure::hitShare(const render::Scene& scene, const glm::vec3& point, float minY, float maxY)
+{
+    const std::vector<glm::vec3> rays = band(minY, maxY);
+    return shareOf(rays, raysMet(scene, point, rays), minY, maxY);
+}
+
+bool Enclosure::insideRoom(const render::Scene& scene, const glm::vec3& point)
+{
+    const std::vector<glm::vec3> rays = band(-kLevel, 1.0f);
+    const std::vector<bool> met = raysMet(scene, point, rays);
+    return shareOf(rays, met, -kLevel, kLevel) >= kEnclosedShare
+        && shareOf(rays, met, kLevel, 1.0f) >= kEnclosedShare;
 }
 
 bool Enclosure::encloses(const render::Scene& scene, const glm::vec3& point)

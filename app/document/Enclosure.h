@@ -21,6 +21,8 @@ public:
     static bool encloses(const render::Scene& scene, const glm::vec3& point);
     /** A roof: 95% of the rays more than 30 degrees above level meet geometry. */
     static bool roofed(const render::Scene& scene, const glm::vec3& point);
+    /** encloses() and roofed() together, in one pass over the scene's triangles. */
+    static bool insideRoom(const render::Scene& scene, const glm::vec3& point);
 };
 
 } // namespace vct::doc
