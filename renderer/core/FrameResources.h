@@ -28,14 +28,12 @@ struct BounceProgress {
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
     VoxelGridFrame frame;
-    /// r32f atlas of sums written with imageAtomicAdd (albedo rgb, count, normal xyz, emission rgb),
-    /// 4n x 3n x n: a 4 x 3 block of slots per voxel (common/VoxelAccumulators.glsl).
-    gl::Texture accumulators;
-    gl::Texture staticAlbedo, staticNormal,
-        staticEmission; ///< Static meshes only, kept while dynamic ones move.
+    /// Static meshes only, kept while dynamic ones move; allocated only when the scene has dynamic meshes.
+    gl::Texture staticAlbedo, staticNormal, staticEmission;
+    /// The voxelizer averages into these in place, as 32-bit words (common/VoxelWords.glsl).
     gl::Texture albedo; ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
-    gl::Texture normal; ///< rgba16f: averaged unit normal (zero where normals cancel).
-    gl::Texture emission; ///< rgba16f: averaged emitted radiance.
+    gl::Texture normal; ///< rgba8 snorm: averaged unit normal (shorter where normals cancel).
+    gl::Texture emission; ///< r11f_g11f_b10f: averaged emitted radiance.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
     /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along
     /// that axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones

@@ -254,7 +254,7 @@ std::string RenderSettings::validate() const
     return {};
 }
 
-std::uint64_t RenderSettings::voxelMemoryBytes() const
+std::uint64_t RenderSettings::voxelMemoryBytes(bool movingObjects) const
 {
     // Mirrors the allocations in VoxelizePass::allocate and MipmapPass::buildDirectional.
     auto chain = [](std::uint64_t side, std::uint64_t bytesPerTexel, bool mips) {
@@ -267,10 +267,9 @@ std::uint64_t RenderSettings::voxelMemoryBytes() const
         return total;
     };
     const std::uint64_t n = std::uint64_t(voxelResolution);
-    std::uint64_t bytes = 12 * n * n * n * 4; // r32f accumulation atlas, 4n x 3n x n
-    bytes += 2
-        * (chain(n, 4, false)
-            + 2 * chain(n, 8, false)); // albedo rgba8, normal + emission rgba16f; static and combined
+    // Albedo, normal and emission, 4 bytes each; the static layer too, which only scenes with moving
+    // objects keep.
+    std::uint64_t bytes = (movingObjects ? 2 : 1) * 3 * chain(n, 4, false);
     bytes += chain(n, 8, true); // radiance rgba16f, full chain
     bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
     if (anisotropicMips && n >= 2)

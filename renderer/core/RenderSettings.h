@@ -100,11 +100,12 @@ struct RenderSettings {
     /** Checks ranges together; returns an empty string or the first problem. */
     std::string validate() const;
     /**
-     * Bytes of every voxel texture the renderer allocates for this grid: accumulation atlas, static and
-     * combined albedo/normal/emission, the radiance mip chain and, with anisotropic mips, six directional
-     * chains. Equals Renderer::voxelBytes() once a frame has been rendered (tested).
+     * Bytes of every voxel texture the renderer allocates for this grid: albedo/normal/emission (twice with
+     * @p movingObjects, which keep a static layer), the radiance mip chain and, with anisotropic mips, six
+     * directional chains, and the bounce and cache cells. Equals Renderer::voxelBytes() once a frame has been
+     * rendered (tested). The budget check counts the static layer: the most the grid can need.
      */
-    std::uint64_t voxelMemoryBytes() const;
+    std::uint64_t voxelMemoryBytes(bool movingObjects = true) const;
     /** (key, current value, meaning) for --help and --stats. */
     std::vector<std::vector<std::string>> describe() const;
     /** True when a change from `other` needs the voxels rebuilt (grid or voxelization mode). */

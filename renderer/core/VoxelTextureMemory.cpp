@@ -17,6 +17,10 @@ std::string formatName(GLenum format)
         return "rgba16f";
     case GL_RGBA8:
         return "rgba8";
+    case GL_RGBA8_SNORM:
+        return "rgba8 snorm";
+    case GL_R11F_G11F_B10F:
+        return "r11f g11f b10f";
     case GL_R32F:
         return "r32f";
     case GL_R32UI:
@@ -59,10 +63,10 @@ std::size_t VoxelTextureMemory::totalBytes() const
 std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
 {
     std::vector<VoxelTextureMemory> list;
-    const std::pair<const char*, const gl::Texture*> named[] = { { "accumulators", &v.accumulators },
-        { "static albedo", &v.staticAlbedo }, { "static normal", &v.staticNormal },
-        { "static emission", &v.staticEmission }, { "albedo", &v.albedo }, { "normal", &v.normal },
-        { "emission", &v.emission }, { "radiance", &v.radiance }, { "opacity", &v.opacity },
+    const std::pair<const char*, const gl::Texture*> named[] = { { "static albedo", &v.staticAlbedo },
+        { "static normal", &v.staticNormal }, { "static emission", &v.staticEmission },
+        { "albedo", &v.albedo }, { "normal", &v.normal }, { "emission", &v.emission },
+        { "radiance", &v.radiance }, { "opacity", &v.opacity },
         { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
         { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
         { "bounce cells", &v.bounceIrradiance }, { "bounce cells, back faces", &v.bounceIrradianceBack },

@@ -11,7 +11,7 @@ struct VoxelVolume;
 /** Storage of one 3D texture of the voxel grid, mip level by mip level (for benchmarks and the stats panel).
  */
 struct VoxelTextureMemory {
-    std::string name; ///< "radiance", "accumulators", "radiance, directional (+x -x +y -y +z -z)", ...
+    std::string name; ///< "radiance", "albedo", "radiance, directional (+x -x +y -y +z -z)", ...
     std::string format; ///< "rgba16f", "rgba8", "r32f"
     int width = 0, height = 0, depth = 0; ///< texels of level 0
     std::vector<std::size_t> levelBytes; ///< one entry per mip level, level 0 first

@@ -40,7 +40,7 @@ std::vector<NonFiniteCount> FiniteCheck::run(
         { "indirect upsampling guide", &screen.indirectGuide }, { "specular", &screen.specular },
         { "area-light shadows", &screen.areaShadow }, { "area-light shadow guide", &screen.areaShadowGuide },
         { "specular upsampling guide", &screen.specularGuide }, { "voxel normal", &voxels.normal },
-        { "voxel emission", &voxels.emission }, { "voxel accumulators", &voxels.accumulators } };
+        { "voxel emission", &voxels.emission } };
     for (const auto& [name, texture] : targets)
         if (*texture)
             counts.push_back({ name, count(*texture, 0) });

@@ -23,6 +23,8 @@ std::size_t bytesPerTexel(GLenum internalFormat)
     case GL_DEPTH_COMPONENT24:
     case GL_DEPTH24_STENCIL8:
     case GL_RGB10_A2:
+    case GL_RGBA8_SNORM:
+    case GL_R11F_G11F_B10F:
         return 4;
     case GL_RGBA16F:
     case GL_RG32F:

@@ -39,36 +39,81 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
+    // The static layer is kept only for moving objects to be redone on top of; without them the static
+    // voxels are the final ones.
+    const bool staticLayer = frame.scene.hasDynamicMeshes();
+    if (v.albedo && v.albedo.width() == res && bool(v.staticAlbedo) == staticLayer)
+        return;
+    m_staticGeometry = 0; // every layer is rebuilt in its new textures
+    v.dynamicBounds = Aabb {};
+    // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
+    auto material = [&](gl::Texture* albedo, gl::Texture* normal, gl::Texture* emission) {
+        *albedo = gl::Texture::create3D(GL_RGBA8, res);
+        *normal = gl::Texture::create3D(GL_RGBA8_SNORM, res);
+        *emission = gl::Texture::create3D(GL_R11F_G11F_B10F, res);
+        for (gl::Texture* t : { albedo, normal, emission })
+            t->setFilter(GL_NEAREST, GL_NEAREST);
+    };
+    if (staticLayer)
+        material(&v.staticAlbedo, &v.staticNormal, &v.staticEmission);
+    else
+        for (gl::Texture* t : { &v.staticAlbedo, &v.staticNormal, &v.staticEmission })
+            *t = gl::Texture {};
     if (v.albedo && v.albedo.width() == res)
         return;
     const int levels = v.frame.levelCount();
-    // One r32f atlas holds the ten running sums, a 4 x 3 block per voxel (see common/VoxelAccumulators.glsl).
-    v.accumulators = gl::Texture::create3D(GL_R32F, 4 * res, 3 * res, res);
-    const float zero = 0.0f;
-    glClearTexImage(v.accumulators.id(), 0, GL_RED, GL_FLOAT, &zero);
-    v.dynamicBounds = Aabb {};
-    v.staticAlbedo = gl::Texture::create3D(GL_RGBA8, res);
-    v.staticNormal = gl::Texture::create3D(GL_RGBA16F, res);
-    v.staticEmission = gl::Texture::create3D(GL_RGBA16F, res);
-    v.albedo = gl::Texture::create3D(GL_RGBA8, res);
-    v.normal = gl::Texture::create3D(GL_RGBA16F, res);
-    v.emission = gl::Texture::create3D(GL_RGBA16F, res);
+    material(&v.albedo, &v.normal, &v.emission);
     v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
     v.opacity = gl::Texture::create3D(GL_RGBA8, res, levels);
     v.opacityVersion = 0;
-    for (gl::Texture* t :
-        { &v.staticAlbedo, &v.staticNormal, &v.staticEmission, &v.albedo, &v.normal, &v.emission })
-        t->setFilter(GL_NEAREST, GL_NEAREST);
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
-void VoxelizePass::accumulate(
-    FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched)
+namespace {
+
+struct MaterialTextures {
+    const gl::Texture* albedo;
+    const gl::Texture* normal;
+    const gl::Texture* emission;
+};
+
+MaterialTextures materialTextures(const VoxelVolume& v, bool staticLayer)
+{
+    if (staticLayer)
+        return { &v.staticAlbedo, &v.staticNormal, &v.staticEmission };
+    return { &v.albedo, &v.normal, &v.emission };
+}
+
+} // namespace
+
+void VoxelizePass::prepare(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
+{
+    // The voxelizer averages into what the region holds: nothing (a clear), or the static layer's values
+    // (merging), which a moving object's first fragment in a voxel replaces. A copy or a clear is far cheaper
+    // on llvmpipe than a shader writing three images per voxel.
+    const VoxelVolume& v = frame.voxels;
+    const MaterialTextures to = materialTextures(v, intoStaticLayer);
+    const MaterialTextures from = materialTextures(v, true);
+    const gl::Texture* outputs[3] = { to.albedo, to.normal, to.emission };
+    const gl::Texture* statics[3] = { from.albedo, from.normal, from.emission };
+    const glm::ivec3 lo = region.lo, size = region.size();
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    for (int i = 0; i < 3; ++i) {
+        if (mergeStatic)
+            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(),
+                GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, size.x, size.y, size.z);
+        else
+            glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
+                outputs[i] == to.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, bool intoStaticLayer,
+    const VoxelRegion& region, OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
-    // The sums are all zero here: the atlas is cleared once when allocated, and each resolve zeroes the sums
-    // it read (voxelize/Resolve.comp).
     const glm::ivec3 size = region.size();
     touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
     m_framebuffer.bind();
@@ -79,7 +124,11 @@ void VoxelizePass::accumulate(
     const bool nvConservative = GLAD_GL_NV_conservative_raster && frame.settings.conservativeVoxelization;
     if (nvConservative)
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
-    v.accumulators.bindImage(0, 0, GL_READ_WRITE);
+    // The three material textures are written as 32-bit words (common/VoxelWords.glsl).
+    const MaterialTextures target = materialTextures(v, intoStaticLayer);
+    int unit = 0;
+    for (const gl::Texture* t : { target.albedo, target.normal, target.emission })
+        t->bindImage(GLuint(unit++), 0, GL_READ_WRITE, GL_R32UI);
     const MeshFilter layer = dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static;
     for (const bool emissive : { false, true }) {
         const gl::Program& program = emissive ? *m_voxelizeEmissive : *m_voxelize;
@@ -105,31 +154,12 @@ void VoxelizePass::accumulate(
         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void VoxelizePass::resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer,
-    const VoxelRegion& region, const OccupiedCellList& touched)
+void VoxelizePass::resolve(FrameContext& frame, bool intoStaticLayer, const OccupiedCellList& touched)
 {
-    VoxelVolume& v = frame.voxels;
-    // Untouched voxels take the static layer's values (merging) or none: a copy or a clear of the region, far
-    // cheaper on llvmpipe than a shader writing three images per voxel. Then the touched ones are averaged.
-    const glm::ivec3 lo = region.lo, size = region.size();
-    const gl::Texture* outputs[3] = { intoStaticLayer ? &v.staticAlbedo : &v.albedo,
-        intoStaticLayer ? &v.staticNormal : &v.normal, intoStaticLayer ? &v.staticEmission : &v.emission };
-    const gl::Texture* statics[3] = { &v.staticAlbedo, &v.staticNormal, &v.staticEmission };
-    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    for (int i = 0; i < 3; ++i) {
-        if (mergeStatic)
-            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(),
-                GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, size.x, size.y, size.z);
-        else
-            glClearTexSubImage(
-                outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT, zero);
-    }
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    v.accumulators.bindImage(0, 0, GL_READ_WRITE);
-    for (int i = 0; i < 3; ++i)
-        outputs[i]->bindImage(GLuint(1 + i), 0, GL_WRITE_ONLY);
+    const MaterialTextures target = materialTextures(frame.voxels, intoStaticLayer);
+    target.albedo->bindImage(0, 0, GL_READ_WRITE, GL_R32UI);
+    target.normal->bindImage(1, 0, GL_READ_WRITE, GL_R32UI);
     m_resolve->use();
-    m_resolve->set("uResolution", v.frame.resolution);
     touched.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
@@ -151,9 +181,10 @@ void VoxelizePass::execute(FrameContext& frame)
     if (!staticRegion.isEmpty()) {
         // A material edit keeps the occupied voxels, so the full rebuild's list of them stays whole.
         OccupiedCellList& touched = staticChanged ? v.staticVoxels : m_editedVoxels;
-        accumulate(frame, false, staticRegion, touched);
-        // Without dynamic meshes the static layer is the final one: resolve straight into it.
-        resolve(frame, false, hasDynamic, staticRegion, touched);
+        // Without dynamic meshes the static layer is the final one: voxelize straight into it.
+        prepare(frame, false, hasDynamic, staticRegion);
+        accumulate(frame, false, hasDynamic, staticRegion, touched);
+        resolve(frame, hasDynamic, touched);
     }
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
@@ -176,8 +207,10 @@ void VoxelizePass::execute(FrameContext& frame)
                     size.x, size.y, size.z);
             region = now;
         }
-        accumulate(frame, true, region, v.dynamicVoxels);
-        resolve(frame, true, false, region, v.dynamicVoxels);
+        if (!staticChanged)
+            prepare(frame, true, false, region);
+        accumulate(frame, true, false, region, v.dynamicVoxels);
+        resolve(frame, false, v.dynamicVoxels);
         changed = staticChanged ? whole : region;
     }
     v.changedRegion = changed;

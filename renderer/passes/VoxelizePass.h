@@ -12,7 +12,7 @@ namespace vct::render {
 
 /**
  * Rasterises the triangles into the voxel grid (dominant-axis projection in a geometry shader, conservative
- * by default) and resolves the sums into averaged albedo/opacity, normal and emission. Static meshes are
+ * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). Static meshes are
  * voxelized into their own layer when they change; dynamic meshes are redone on top of it whenever they move.
  */
 class VoxelizePass final : public RenderPass {
@@ -25,11 +25,14 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
-    /** Sums the fragments of one layer's meshes in the region, listing each voxel reached into @p touched. */
-    void accumulate(
-        FrameContext& frame, bool dynamicMeshes, const VoxelRegion& region, OccupiedCellList& touched);
-    void resolve(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region,
-        const OccupiedCellList& touched);
+    /** Clears the region of the layer about to be voxelized, or copies the static layer there (merging). */
+    void prepare(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region);
+    /** Averages the fragments of one layer's meshes into the region, listing each voxel reached into @p
+     * touched. */
+    void accumulate(FrameContext& frame, bool dynamicMeshes, bool intoStaticLayer, const VoxelRegion& region,
+        OccupiedCellList& touched);
+    /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
+    void resolve(FrameContext& frame, bool intoStaticLayer, const OccupiedCellList& touched);
 
     const gl::Program* m_voxelize = nullptr;
     const gl::Program* m_voxelizeEmissive

@@ -1,11 +1,10 @@
-// Adds this fragment's material to every voxel its pixel column crosses; the resolve pass divides by count,
-// so overlapping fragments average instead of the last one winning. The first fragment to reach a voxel lists
-// it (core/OccupiedCellList) for the resolve and, after a full rebuild, for light injection: no pass has to
-// search the grid for the voxels drawn.
-// EMISSIVE: the variant for emissive materials (passes/VoxelizePass). The atomics are most of this pass's
-// cost on llvmpipe, and other materials add nothing to the emission sums, so they skip those three.
-#extension GL_NV_shader_atomic_float : require
-#include "common/VoxelAccumulators.glsl"
+// Averages this fragment's material into every voxel its pixel column crosses (common/VoxelWords.glsl), so
+// overlapping fragments average instead of the last one winning. The fragment whose update finds a voxel empty
+// lists it (core/OccupiedCellList) for the resolve and, after a full rebuild, for light injection: no pass has
+// to search the grid for the voxels drawn.
+// EMISSIVE: the variant for emissive materials (passes/VoxelizePass). Other materials leave the emission word
+// alone unless it holds light, so most fragments skip its compare-and-swap.
+#include "common/VoxelWords.glsl"
 #include "common/AppendCell.glsl"
 
 in vec3 gNormal;
@@ -21,18 +20,66 @@ uniform vec3 uAlbedo;
 uniform vec3 uEmission;
 #endif
 layout(binding = 0) uniform sampler2D uAlbedoTexture;
-layout(r32f, binding = 0) uniform coherent image3D uAccumulators;
-uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept: their sums were not cleared
+layout(r32ui, binding = 0) uniform coherent uimage3D uAlbedoWords;
+layout(r32ui, binding = 1) uniform coherent uimage3D uNormalWords;
+layout(r32ui, binding = 2) uniform coherent uimage3D uEmissionWords;
+uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept
 uniform ivec3 uRegionHi;
+
+// A compare-and-swap only fails because another fragment's succeeded, so a few attempts are enough; one that
+// still loses leaves its share out rather than stall the rasterizer.
+const int kAttempts = 16;
 
 ivec3 unswizzle(ivec3 c, int axis)
 {
     return axis == 0 ? c.zxy : (axis == 1 ? c.yzx : c.xyz);
 }
 
-void add(ivec3 voxel, int slot, float value)
+// Returns how many fragments the voxel held before this one (0: it was empty or held resolved static
+// content), or -1 if every attempt lost.
+int addAlbedo(ivec3 voxel, vec3 albedo)
 {
-    imageAtomicAdd(uAccumulators, accumulatorCoord(voxel, slot, uResolution), value);
+    uint seen = imageLoad(uAlbedoWords, voxel).r;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        uint old = seen;
+        uint n = albedoCount(old);
+        vec3 mean = n == 0u ? albedo : mix(unpackUnorm4x8(old).rgb, albedo, 1.0 / float(n + 1u));
+        seen = imageAtomicCompSwap(uAlbedoWords, voxel, old, packAlbedoWord(mean, min(n + 1u, kMaxCount)));
+        if (seen == old)
+            return int(n);
+    }
+    return -1;
+}
+
+void addNormal(ivec3 voxel, vec3 normal)
+{
+    uint seen = imageLoad(uNormalWords, voxel).r;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        uint old = seen;
+        uint n = old >> 24; // 0 once resolved: a moving object's normals replace the static ones
+        vec3 mean = n == 0u ? normal : mix(unpackNormalWord(old), normal, 1.0 / float(n + 1u));
+        seen = imageAtomicCompSwap(uNormalWords, voxel, old, packNormalWord(mean, min(n + 1u, kMaxCount)));
+        if (seen == old)
+            return;
+    }
+}
+
+// `before` fragments reached the voxel ahead of this one (by the albedo word's count).
+void addEmission(ivec3 voxel, vec3 emission, int before)
+{
+    uint seen = imageLoad(uEmissionWords, voxel).r;
+    if (seen == 0u && all(equal(emission, vec3(0.0))))
+        return;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        uint old = seen;
+        vec3 mean = before == 0 ? emission : mix(unpackR11G11B10F(old), emission, 1.0 / float(before + 1));
+        uint next = packR11G11B10F(mean);
+        if (next == old)
+            return;
+        seen = imageAtomicCompSwap(uEmissionWords, voxel, old, next);
+        if (seen == old)
+            return;
+    }
 }
 
 void main()
@@ -45,6 +92,11 @@ void main()
     vec3 normal = gNormal;
     float len = length(normal);
     normal = len > 1e-20 ? normal / len : vec3(0.0);
+#ifdef EMISSIVE
+    vec3 emission = uEmission;
+#else
+    vec3 emission = vec3(0.0);
+#endif
 
     float depth = gl_FragCoord.z * float(uResolution);
     float spread = uConservative ? gDepthSlope : 0.0;
@@ -54,18 +106,12 @@ void main()
         ivec3 voxel = unswizzle(ivec3(ivec2(gl_FragCoord.xy), z), gAxis);
         if (any(lessThan(voxel, uRegionLo)) || any(greaterThanEqual(voxel, uRegionHi)))
             continue;
-        if (imageAtomicAdd(uAccumulators, accumulatorCoord(voxel, ACC_COUNT, uResolution), 1.0) == 0.0)
+        int before = addAlbedo(voxel, albedo);
+        if (before < 0)
+            continue;
+        if (before == 0)
             appendCell(voxel);
-        add(voxel, ACC_ALBEDO_R, albedo.r);
-        add(voxel, ACC_ALBEDO_G, albedo.g);
-        add(voxel, ACC_ALBEDO_B, albedo.b);
-        add(voxel, ACC_NORMAL_X, normal.x);
-        add(voxel, ACC_NORMAL_Y, normal.y);
-        add(voxel, ACC_NORMAL_Z, normal.z);
-#ifdef EMISSIVE
-        add(voxel, ACC_EMISSION_R, uEmission.r);
-        add(voxel, ACC_EMISSION_G, uEmission.g);
-        add(voxel, ACC_EMISSION_B, uEmission.b);
-#endif
+        addNormal(voxel, normal);
+        addEmission(voxel, emission, before);
     }
 }

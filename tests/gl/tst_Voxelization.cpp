@@ -86,9 +86,13 @@ private slots:
     void tiltedTriangleIsCoveredConservatively();
     void subVoxelSliverNeedsConservativeVoxelization();
     void overlappingSurfacesAverage();
+    void manySurfacesAverageWithinQuantization();
+    void opposingFacesCancelTheirNormals();
     void noGlErrors();
 
 private:
+    /** Voxelizes @p scene into a 16^3 grid over [1, 15]^3 m. */
+    void renderOnSixteenCubed(const render::Scene& scene);
     void voxelize(
         const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo = glm::vec3(0.5f));
     test::GlTestContext m_gl;
@@ -183,6 +187,16 @@ void VoxelizationTest::subVoxelSliverNeedsConservativeVoxelization()
         qPrintable(QString("kept %1\nexpected %2").arg(describe(kept), describe(expected))));
 }
 
+void VoxelizationTest::renderOnSixteenCubed(const render::Scene& scene)
+{
+    render::RenderSettings settings;
+    settings.voxelResolution = 16;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
+    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
+}
+
 void VoxelizationTest::overlappingSurfacesAverage()
 {
     // Two coplanar quads with different albedos over the same voxels: the voxel holds the mean. Only the blue
@@ -198,12 +212,7 @@ void VoxelizationTest::overlappingSurfacesAverage()
         = test::quad({ 4.2f, 4.2f, 7.5f }, { 8.8f, 4.2f, 7.5f }, { 8.8f, 8.8f, 7.5f }, { 4.2f, 8.8f, 7.5f });
     scene.meshes.push_back(test::makeTriangles(q, 0));
     scene.meshes.push_back(test::makeTriangles(q, 1));
-    render::RenderSettings settings;
-    settings.voxelResolution = 16;
-    m_gl.renderer->setSettings(settings);
-    m_gl.renderer->setScene(scene);
-    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
-    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
+    renderOnSixteenCubed(scene);
     int size = 0;
     const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
     const std::size_t i = ((std::size_t(7) * size + 6) * size + 6) * 4; // an interior voxel of the quads
@@ -214,6 +223,75 @@ void VoxelizationTest::overlappingSurfacesAverage()
     for (int c = 0; c < 3; ++c)
         QVERIFY2(std::abs(emission[i + std::size_t(c)] - 0.5f * blue.emission[c]) < 1e-3f,
             qPrintable(QString("emission channel %1: %2").arg(c).arg(emission[i + std::size_t(c)])));
+}
+
+void VoxelizationTest::manySurfacesAverageWithinQuantization()
+{
+    // The voxelizer keeps a running mean in 8-bit albedo and 11/10-bit float emission
+    // (common/VoxelWords.glsl): twelve coplanar quads with albedos and emissions from dark to bright must
+    // still average to their mean, whatever order the fragments arrive in, within a few steps of the stored
+    // precision.
+    render::Scene scene;
+    const auto q
+        = test::quad({ 4.2f, 4.2f, 7.5f }, { 8.8f, 4.2f, 7.5f }, { 8.8f, 8.8f, 7.5f }, { 4.2f, 8.8f, 7.5f });
+    constexpr int kSurfaces = 12;
+    glm::vec3 meanAlbedo(0.0f), meanEmission(0.0f);
+    for (int k = 0; k < kSurfaces; ++k) {
+        render::Material m;
+        const float t = float(k) / float(kSurfaces - 1);
+        m.albedo = glm::vec3(t, 1.0f - t, 0.5f);
+        m.emission = glm::vec3(0.1f + 4.0f * t, 2.0f, 0.0f);
+        meanAlbedo += m.albedo / float(kSurfaces);
+        meanEmission += m.emission / float(kSurfaces);
+        scene.materials.push_back(m);
+        scene.meshes.push_back(test::makeTriangles(q, k));
+    }
+    renderOnSixteenCubed(scene);
+    int size = 0;
+    const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
+    const std::vector<float> emission = m_gl.renderer->readVoxels("emission", 0, size);
+    const std::size_t i = ((std::size_t(7) * size + 6) * size + 6) * 4;
+    for (int c = 0; c < 3; ++c) {
+        QVERIFY2(std::abs(albedo[i + std::size_t(c)] - meanAlbedo[c]) < 3.0f / 255.0f,
+            qPrintable(QString("albedo channel %1: %2, mean %3")
+                           .arg(c)
+                           .arg(albedo[i + std::size_t(c)])
+                           .arg(meanAlbedo[c])));
+        QVERIFY2(std::abs(emission[i + std::size_t(c)] - meanEmission[c]) <= 0.02f * meanEmission[c],
+            qPrintable(QString("emission channel %1: %2, mean %3")
+                           .arg(c)
+                           .arg(emission[i + std::size_t(c)])
+                           .arg(meanEmission[c])));
+    }
+    QCOMPARE(albedo[i + 3], 1.0f);
+}
+
+void VoxelizationTest::opposingFacesCancelTheirNormals()
+{
+    // Two faces of a thin wall in one voxel: their normals cancel, which lighting reads as a two-sided voxel;
+    // a lone face keeps a unit normal within the 8-bit precision.
+    render::Scene scene;
+    scene.materials = { render::Material {} };
+    const auto up
+        = test::quad({ 4.2f, 4.2f, 7.5f }, { 8.8f, 4.2f, 7.5f }, { 8.8f, 8.8f, 7.5f }, { 4.2f, 8.8f, 7.5f });
+    const auto down
+        = test::quad({ 4.2f, 4.2f, 7.6f }, { 4.2f, 8.8f, 7.6f }, { 8.8f, 8.8f, 7.6f }, { 8.8f, 4.2f, 7.6f });
+    const auto lone = test::quad(
+        { 4.2f, 4.2f, 11.2f }, { 8.8f, 4.2f, 11.2f }, { 8.8f, 8.8f, 11.2f }, { 4.2f, 8.8f, 11.2f });
+    for (const auto& quad : { up, down, lone })
+        scene.meshes.push_back(test::makeTriangles(quad, 0));
+    renderOnSixteenCubed(scene);
+    int size = 0;
+    const std::vector<float> normal = m_gl.renderer->readVoxels("normal", 0, size);
+    auto at = [&](int z) {
+        const std::size_t i = ((std::size_t(z) * size + 6) * size + 6) * 4;
+        return glm::vec4(normal[i], normal[i + 1], normal[i + 2], normal[i + 3]);
+    };
+    QVERIFY2(glm::length(glm::vec3(at(7))) < 0.02f,
+        qPrintable(QString("wall: |n| %1").arg(glm::length(glm::vec3(at(7))))));
+    const glm::vec4 face = at(11);
+    QVERIFY2(std::abs(face.z - 1.0f) < 0.01f, qPrintable(QString("face: n.z %1").arg(face.z)));
+    QCOMPARE(face.w, 0.0f);
 }
 
 void VoxelizationTest::noGlErrors()

@@ -443,7 +443,7 @@ void HardCasesTest::settingsAtTheirLimits()
 // the cone weights integrate the cosine lobe to one and every cone ends on an emitting wall. That holds with
 // direction-dependent mips; box-filtered mips let wide cones see through the walls at coarse levels and
 // lose most of the bounce, a bias the test measures and reports (docs/STABILITY.md) rather than hides.
-// The other end of the grid range: 512^3 needs 12.1 GiB of voxel textures. The settings say so and refuse it
+// The other end of the grid range: 512^3 needs 4.7 GiB of voxel textures. The settings say so and refuse it
 // under the default budget instead of letting the GL fail mid-frame; the settings in use stay as they were.
 void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 {
@@ -453,7 +453,7 @@ void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
     settings.irradianceCache = false;
     settings.bounces = 1; // nor the bounce volume
     const std::string problem = settings.set("voxel_res", "512");
-    QVERIFY2(problem.find("voxel_res=512 needs 12.7 GiB") != std::string::npos, problem.c_str());
+    QVERIFY2(problem.find("voxel_res=512 needs 4.7 GiB") != std::string::npos, problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
     QCOMPARE(settings.voxelResolution, 32);
     // With the budget raised, the same grid is accepted: the limit is memory, not the code.
@@ -474,7 +474,7 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
                 settings.irradianceCache = anisotropic; // and its cells, sized by the grid
                 settings.irradianceCellSize = resolution == 8 ? 4 : 2;
                 render(room(), settings, 16);
-                QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
+                QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes(false));
             }
 }
 
