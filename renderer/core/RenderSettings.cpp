@@ -254,7 +254,7 @@ std::string RenderSettings::validate() const
     return {};
 }
 
-std::uint64_t RenderSettings::voxelMemoryBytes(bool movingObjects) const
+std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
 {
     // Mirrors the allocations in VoxelizePass::allocate and MipmapPass::buildDirectional.
     auto chain = [](std::uint64_t side, std::uint64_t bytesPerTexel, bool mips) {
@@ -269,9 +269,10 @@ std::uint64_t RenderSettings::voxelMemoryBytes(bool movingObjects) const
     const std::uint64_t n = std::uint64_t(voxelResolution);
     // Albedo, normal and emission, 4 bytes each; the static layer too, which only scenes with moving
     // objects keep.
-    std::uint64_t bytes = (movingObjects ? 2 : 1) * 3 * chain(n, 4, false);
+    std::uint64_t bytes = (scene.movingObjects ? 2 : 1) * 3 * chain(n, 4, false);
     bytes += chain(n, 8, true); // radiance rgba16f, full chain
-    bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
+    if (scene.areaLights)
+        bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
     if (anisotropicMips && n >= 2)
         bytes += 11
             * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them

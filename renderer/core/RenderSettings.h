@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/VoxelSceneNeeds.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -100,12 +102,13 @@ struct RenderSettings {
     /** Checks ranges together; returns an empty string or the first problem. */
     std::string validate() const;
     /**
-     * Bytes of every voxel texture the renderer allocates for this grid: albedo/normal/emission (twice with
-     * @p movingObjects, which keep a static layer), the radiance mip chain and, with anisotropic mips, six
-     * directional chains, and the bounce and cache cells. Equals Renderer::voxelBytes() once a frame has been
-     * rendered (tested). The budget check counts the static layer: the most the grid can need.
+     * Bytes of every voxel texture the renderer allocates for this grid: albedo/normal/emission (twice for
+     * a scene with moving objects, which keeps a static layer), the radiance mip chain and, with anisotropic
+     * mips, six directional chains, the opacity chain for a scene with area lights, and the bounce and cache
+     * cells. Equals Renderer::voxelBytes() once a frame has been rendered (tested). The budget check counts
+     * what the scene may add: the most the grid can need.
      */
-    std::uint64_t voxelMemoryBytes(bool movingObjects = true) const;
+    std::uint64_t voxelMemoryBytes(VoxelSceneNeeds scene = {}) const;
     /** (key, current value, meaning) for --help and --stats. */
     std::vector<std::vector<std::string>> describe() const;
     /** True when a change from `other` needs the voxels rebuilt (grid or voxelization mode). */

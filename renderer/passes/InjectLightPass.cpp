@@ -111,6 +111,11 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
 void InjectLightPass::buildOpacity(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
+    // Only the area lights' shadow cones read the volume: scenes without them do not keep it.
+    if (!v.opacity || v.opacity.width() != v.frame.resolution) {
+        v.opacity = gl::Texture::create3D(GL_RGBA8, v.frame.resolution, v.frame.levelCount());
+        v.opacityVersion = 0;
+    }
     if (v.opacityVersion == v.materialsVersion)
         return;
     if (!m_markOpacity) {
@@ -151,6 +156,8 @@ void InjectLightPass::execute(FrameContext& frame)
             "AREA_LIGHT_COUNT " + std::to_string(areas) } });
     if (areas > 0)
         buildOpacity(frame);
+    else
+        frame.voxels.opacity = gl::Texture {};
     const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;

@@ -64,8 +64,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     const int levels = v.frame.levelCount();
     material(&v.albedo, &v.normal, &v.emission);
     v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
-    v.opacity = gl::Texture::create3D(GL_RGBA8, res, levels);
-    v.opacityVersion = 0;
+    v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
@@ -86,7 +85,8 @@ MaterialTextures materialTextures(const VoxelVolume& v, bool staticLayer)
 
 } // namespace
 
-void VoxelizePass::prepare(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
+void VoxelizePass::prepare(
+    FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
 {
     // The voxelizer averages into what the region holds: nothing (a clear), or the static layer's values
     // (merging), which a moving object's first fragment in a voxel replaces. A copy or a clear is far cheaper

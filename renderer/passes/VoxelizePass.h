@@ -12,8 +12,9 @@ namespace vct::render {
 
 /**
  * Rasterises the triangles into the voxel grid (dominant-axis projection in a geometry shader, conservative
- * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). Static meshes are
- * voxelized into their own layer when they change; dynamic meshes are redone on top of it whenever they move.
+ * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). Static meshes
+ * are voxelized into their own layer when they change; dynamic meshes are redone on top of it whenever they
+ * move.
  */
 class VoxelizePass final : public RenderPass {
 public:

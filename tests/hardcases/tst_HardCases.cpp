@@ -474,8 +474,23 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
                 settings.irradianceCache = anisotropic; // and its cells, sized by the grid
                 settings.irradianceCellSize = resolution == 8 ? 4 : 2;
                 render(room(), settings, 16);
-                QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes(false));
+                QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
+                    settings.voxelMemoryBytes({ .movingObjects = false, .areaLights = false }));
             }
+    // What a scene adds: a static layer for a moving object, an opacity chain for an area light's shadows;
+    // and nothing once they are gone.
+    render::Scene scene = room();
+    scene.meshes[1].dynamic = true;
+    render::SurfaceLight rect;
+    rect.centre = glm::vec3(0.0f, 0.9f, 0.0f);
+    scene.surfaceLights.push_back(rect);
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    render(scene, settings, 16);
+    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
+    render(room(), settings, 16);
+    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
+        settings.voxelMemoryBytes({ .movingObjects = false, .areaLights = false }));
 }
 
 void HardCasesTest::whiteFurnace()

@@ -1,0 +1,11 @@
+#pragma once
+
+namespace vct::render {
+
+/** What a scene adds to the voxel textures (RenderSettings::voxelMemoryBytes). */
+struct VoxelSceneNeeds {
+    bool movingObjects = true; ///< a static layer, kept while dynamic meshes are redone
+    bool areaLights = true; ///< an opacity chain for the area lights' shadow cones
+};
+
+} // namespace vct::render
