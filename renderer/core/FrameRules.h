@@ -49,6 +49,14 @@ struct FrameRules {
     {
         return emissionNeeded(frame) && !emittersAsAreaLights(frame);
     }
+    /**
+     * Bounces past the first are carried by the voxels (passes/VoxelBouncePass): cones then trace the bounced
+     * volume, and the first-bounce radiance is kept at level 0 only, as the iteration's source.
+     */
+    static bool bounceVolumeUsed(const FrameContext& frame)
+    {
+        return frame.settings.bounces != 1 && hasLightSources(frame);
+    }
     /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
     static bool ambientOcclusionNeeded(const FrameContext& frame)
     {

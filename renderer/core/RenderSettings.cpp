@@ -270,14 +270,18 @@ std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
     // Albedo, normal and emission, 4 bytes each; the static layer too, which only scenes with moving
     // objects keep.
     std::uint64_t bytes = (scene.movingObjects ? 2 : 1) * 3 * chain(n, 4, false);
-    bytes += chain(n, 8, true); // radiance rgba16f, full chain
     if (scene.areaLights)
         bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
+    // The volume cones trace, rgba16f with its levels, and with anisotropic mips six directional chains from
+    // level 1 and the five gaps between them: the bounced volume when bounces are carried by the voxels (the
+    // first-bounce radiance then keeps level 0 only), else the first-bounce radiance itself.
+    const bool bounced = bounces != 1 && scene.lightSources;
+    bytes += chain(n, 8, !bounced);
+    if (bounced)
+        bytes += chain(n, 8, true);
     if (anisotropicMips && n >= 2)
-        bytes += 11
-            * chain(n / 2, 8, true); // six directional chains from level 1 and the five gaps between them
-    if (bounces != 1) { // the bounced volume and its chains; the bounce cells (front, back, normal, rgba16f)
-        bytes += chain(n, 8, true) + (anisotropicMips && n >= 2 ? 11 * chain(n / 2, 8, true) : 0);
+        bytes += 11 * chain(n / 2, 8, true);
+    if (bounced) { // the bounce cells (front, back, normal, rgba16f)
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(bounceCellSize), 1);
         bytes += 3 * chain(cells, 8, false);
     }

@@ -58,12 +58,12 @@ namespace {
 // mips are anisotropic: filtered only when something looks at them.
 void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
 {
-    const bool radianceStale = v.radiance && v.boxMipsVersion != v.radianceVersion;
+    const bool radianceStale = v.radiance && v.radiance.levels() > 1 && v.boxMipsVersion != v.radianceVersion;
     const bool bouncedStale
         = v.bounced && v.bouncedDirectional && v.bouncedBoxMipsVersion != v.bouncedVersion;
     if (!radianceStale && !bouncedStale)
         return;
-    builder.listCells(shaders, v.frame.resolution, v.radiance.levels(), v.occupiedVoxels(dynamicMeshes));
+    builder.listCells(shaders, v.frame.resolution, v.frame.levelCount(), v.occupiedVoxels(dynamicMeshes));
     if (radianceStale) {
         builder.buildBox(shaders, v.radiance);
         v.boxMipsVersion = v.radianceVersion;
@@ -438,7 +438,7 @@ std::vector<NonFiniteCount> Renderer::countNonFinite()
 
 int Renderer::voxelLevelCount() const
 {
-    return m_state->voxels.radiance ? m_state->voxels.radiance.levels() : 0;
+    return m_state->voxels.radiance ? m_state->voxels.frame.levelCount() : 0;
 }
 
 RadianceImage Renderer::readFrame() const
@@ -481,10 +481,11 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
         : channel == "normal"                        ? &v.normal
         : channel == "emission"                      ? &v.emission
         : channel == "radiance"                      ? &v.radiance
+        : channel == "bounced"                       ? &v.bounced
                                                      : nullptr;
     if (!texture || !*texture)
         throw std::invalid_argument(
-            "no voxel channel '" + channel + "' (albedo, normal, emission, radiance)");
+            "no voxel channel '" + channel + "' (albedo, normal, emission, radiance, bounced)");
     return readTextureLevel(*texture, level, size);
 }
 

@@ -6,6 +6,7 @@ namespace vct::render {
 struct VoxelSceneNeeds {
     bool movingObjects = true; ///< a static layer, kept while dynamic meshes are redone
     bool areaLights = true; ///< an opacity chain for the area lights' shadow cones
+    bool lightSources = true; ///< anything to bounce: without light there is no bounced volume
 };
 
 } // namespace vct::render

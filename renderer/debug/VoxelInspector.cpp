@@ -18,9 +18,12 @@ const VoxelListing& VoxelInspector::list(
 {
     if (!volume.radiance)
         return m_listing = VoxelListing {};
-    level = std::clamp(level, 0, volume.radiance.levels() - 1);
-    const std::array<std::uint64_t, 5> key { std::uint64_t(level), std::uint64_t(channel),
-        volume.materialsVersion, volume.radianceVersion, std::uint64_t(volume.frame.resolution) };
+    // The light cones trace: the bounced volume when bounces are carried by the voxels.
+    const gl::Texture& radiance = volume.coneRadiance();
+    level = std::clamp(level, 0, radiance.levels() - 1);
+    const std::array<std::uint64_t, 6> key { std::uint64_t(level), std::uint64_t(channel),
+        volume.materialsVersion, volume.radianceVersion, volume.bouncedVersion,
+        std::uint64_t(volume.frame.resolution) };
     if (m_valid && key == m_key)
         return m_listing;
     if (!m_compact) {
@@ -36,7 +39,7 @@ const VoxelListing& VoxelInspector::list(
     const gl::Texture& channelTexture = channel == VoxelChannel::Normal ? volume.normal
         : channel == VoxelChannel::Emission                             ? volume.emission
                                                                         : volume.albedo;
-    volume.radiance.bindUnit(0);
+    radiance.bindUnit(0);
     channelTexture.bindUnit(1);
     volume.albedo.bindUnit(2);
     m_entries.bindBase(GL_SHADER_STORAGE_BUFFER, 0);

@@ -31,8 +31,8 @@ private:
     gl::Buffer m_counter;
     gl::VertexArray m_emptyVao;
     VoxelListing m_listing;
-    std::array<std::uint64_t, 5>
-        m_key {}; ///< level, channel, materials version, radiance version, resolution
+    /// level, channel, materials version, radiance version, bounced version, resolution
+    std::array<std::uint64_t, 6> m_key {};
     bool m_valid = false;
 };
 

@@ -60,7 +60,7 @@ void ConeTracePass::execute(FrameContext& frame)
 {
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
-    const bool anisotropic = settings.anisotropicMips && v.directional;
+    const bool anisotropic = settings.anisotropicMips && v.coneDirectional();
     const bool counting = frame.coneSampleCounter != nullptr;
     const bool cached = VoxelIrradiancePass::inUse(frame) && v.irradiance;
     const bool diffuse = FrameRules::diffuseConesNeeded(frame);
@@ -93,7 +93,7 @@ void ConeTracePass::execute(FrameContext& frame)
     };
     const auto traceClass = [&](const gl::Program& cones, int divisor, std::uint32_t pixelClass) {
         glStencilFunc(GL_EQUAL, GLint(pixelClass), GLuint(pixelClass));
-        ConeTracingSetup::apply(cones, frame, anisotropic, true);
+        ConeTracingSetup::apply(cones, frame, anisotropic);
         cones.set("uDivisor", divisor);
         cones.set("uFullSize", glm::ivec3(s.width, s.height, 0));
         cones.set("uCameraPosition", frame.camera.position);

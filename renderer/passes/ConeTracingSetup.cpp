@@ -9,8 +9,7 @@
 
 namespace vct::render {
 
-void ConeTracingSetup::apply(
-    const gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced)
+void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& frame, bool anisotropic)
 {
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
@@ -25,7 +24,7 @@ void ConeTracingSetup::apply(
     program.set("uGridOrigin", v.frame.origin);
     program.set("uGridExtent", v.frame.extent);
     program.set("uVoxelSize", voxel);
-    program.set("uMaxLevel", float(v.radiance.levels() - 1));
+    program.set("uMaxLevel", float(v.frame.levelCount() - 1));
     program.set("uStepFactor", settings.stepFactor);
     program.set("uMaxDistance", maxDistance);
     program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
@@ -33,19 +32,17 @@ void ConeTracingSetup::apply(
     program.set("uCones", cones);
     program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
 
-    (useBounced ? v.coneRadiance() : v.radiance).bindUnit(5);
-    if (anisotropic) {
-        const gl::Texture& chains = useBounced ? v.coneDirectional() : v.directional;
-        chains.bindUnit(6);
-    }
+    v.coneRadiance().bindUnit(5);
+    if (anisotropic)
+        v.coneDirectional().bindUnit(6);
 }
 
 void ConeTracingSetup::applyCellGather(const gl::Program& program, const FrameContext& frame,
-    bool anisotropic, bool useBounced, int cellSize, bool ao, const gl::Texture& front,
-    const gl::Texture& back, const gl::Texture& normals)
+    bool anisotropic, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
+    const gl::Texture& normals)
 {
     const VoxelVolume& v = frame.voxels;
-    apply(program, frame, anisotropic, useBounced);
+    apply(program, frame, anisotropic);
     program.set("uResolution", v.frame.resolution);
     program.set("uCellSize", cellSize);
     program.set("uOne", 1);

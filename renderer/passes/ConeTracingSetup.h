@@ -10,20 +10,18 @@ struct FrameContext;
 /**
  * Sets what common/ConeTracing.glsl reads (grid placement, step and distance limits, the diffuse cone set)
  * and binds the volume the cones trace through, so the per-pixel cone pass and the per-voxel bounce gather
- * trace with the same parameters. @p useBounced chooses the second-bounce volume when there is one.
+ * trace with the same parameters: the bounced volume when there is one (VoxelVolume::coneRadiance).
  */
 class ConeTracingSetup {
 public:
-    static void apply(
-        const gl::Program& program, const FrameContext& frame, bool anisotropic, bool useBounced);
+    static void apply(const gl::Program& program, const FrameContext& frame, bool anisotropic);
     /**
      * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to
      * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
      * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
      */
     static void applyCellGather(const gl::Program& program, const FrameContext& frame, bool anisotropic,
-        bool useBounced, int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back,
-        const gl::Texture& normals);
+        int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals);
 };
 
 } // namespace vct::render

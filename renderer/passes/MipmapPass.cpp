@@ -1,19 +1,51 @@
 #include "passes/MipmapPass.h"
 
 #include "core/FrameContext.h"
+#include "core/FrameRules.h"
 
 namespace vct::render {
 
+namespace {
+
+/** Gives @p texture @p levels mip levels, keeping level 0. */
+void setLevelCount(gl::Texture& texture, int levels)
+{
+    if (texture.levels() == levels)
+        return;
+    const int side = texture.width();
+    gl::Texture resized = gl::Texture::create3D(texture.format(), side, levels);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glCopyImageSubData(
+        texture.id(), GL_TEXTURE_3D, 0, 0, 0, 0, resized.id(), GL_TEXTURE_3D, 0, 0, 0, 0, side, side, side);
+    texture = std::move(resized);
+}
+
+} // namespace
+
 PassDecision MipmapPass::plan(const FrameContext& frame)
 {
-    if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic)
+    if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic
+        && FrameRules::bounceVolumeUsed(frame) == m_levelZeroOnly)
         return { PassDecision::Action::Reuse, "radiance unchanged" };
+    if (FrameRules::bounceVolumeUsed(frame))
+        return { PassDecision::Action::Run, "level 0 only: cones trace the bounced volume's levels" };
     return { PassDecision::Action::Run, "radiance was re-injected" };
 }
 
 void MipmapPass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
+    m_radianceVersion = v.radianceVersion;
+    m_anisotropic = frame.settings.anisotropicMips;
+    m_levelZeroOnly = FrameRules::bounceVolumeUsed(frame);
+    // With bounces in the voxels cones trace the bounced volume, which filters its own levels; the
+    // first-bounce light is only its source, read at level 0, so its levels would be memory nobody reads.
+    setLevelCount(v.radiance, m_levelZeroOnly ? 1 : v.frame.levelCount());
+    if (m_levelZeroOnly) {
+        v.directional = gl::Texture();
+        v.boxMipsVersion = v.radianceVersion;
+        return;
+    }
     m_builder.listCells(frame.shaders, v.frame.resolution, v.radiance.levels(),
         v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
@@ -23,8 +55,6 @@ void MipmapPass::execute(FrameContext& frame)
         v.boxMipsVersion = v.radianceVersion;
         v.directional = gl::Texture();
     }
-    m_radianceVersion = v.radianceVersion;
-    m_anisotropic = frame.settings.anisotropicMips;
 }
 
 } // namespace vct::render

@@ -10,6 +10,8 @@ namespace vct::render {
 /**
  * Filters the radiance volume into the levels cones read: the six direction-dependent chains with anisotropic
  * mips, otherwise levels 1..N of the volume itself by 2x2x2 box filtering, each level from the one below.
+ * When bounces are carried by the voxels, cones trace the bounced volume instead, and the radiance volume
+ * keeps level 0 alone.
  */
 class MipmapPass final : public RenderPass {
 public:
@@ -26,6 +28,7 @@ private:
     VoxelMipBuilder m_builder;
     std::uint64_t m_radianceVersion = 0;
     bool m_anisotropic = false;
+    bool m_levelZeroOnly = false; ///< the bounce volume is in use: radiance keeps level 0 only
 };
 
 } // namespace vct::render

@@ -29,7 +29,7 @@ int VoxelBouncePass::iterationLimit(const FrameContext& frame)
 PassDecision VoxelBouncePass::plan(const FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (frame.settings.bounces == 1 || !FrameRules::hasLightSources(frame)) {
+    if (!FrameRules::bounceVolumeUsed(frame)) {
         // Cones must go back to the first-bounce volume; the memory is not needed either.
         for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance,
                  &v.bounceIrradianceBack, &v.bounceCellNormal })
@@ -59,7 +59,7 @@ void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
 {
     const int res = v.frame.resolution;
     if (!v.bounced || v.bounced.width() != res)
-        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.radiance.levels());
+        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.frame.levelCount());
     if (!v.bounceIrradiance || v.bounceIrradiance.width() != cells)
         for (gl::Texture* t : { &v.bounceIrradiance, &v.bounceIrradianceBack, &v.bounceCellNormal }) {
             *t = gl::Texture::create3D(GL_RGBA16F, cells);
@@ -69,10 +69,32 @@ void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
         m_residualSums = gl::Texture::create2D(GL_R32F, 2 * kResidualSlots, 1);
 }
 
-void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compare, int slot)
+void VoxelBouncePass::buildMips(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
+    if (frame.settings.anisotropicMips)
+        m_builder.buildDirectional(frame.shaders, v.bounced, v.frame.resolution, v.bouncedDirectional);
+    else
+        m_builder.buildBox(frame.shaders, v.bounced);
+}
+
+void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
+{
+    // The first-bounce volume is kept at level 0 only (MipmapPass): its light becomes the first iterate here,
+    // filtered into the bounced volume's own levels, and the first gather reads it from there.
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glCopyImageSubData(
+        v.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.bounced.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res, res, res);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    buildMips(frame);
+}
+
+void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
+{
+    VoxelVolume& v = frame.voxels;
+    const bool anisotropic = frame.settings.anisotropicMips;
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.bounceCellSize, res);
     const int cells = res / cellSize;
@@ -81,8 +103,8 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
     const gl::Program& gather = frame.shaders.program(
         { anisotropic ? "bounce cells (anisotropic)" : "bounce cells", { "irradiance/GatherCells.comp" },
             anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
-    ConeTracingSetup::applyCellGather(gather, frame, anisotropic, fromBounced, cellSize, false,
-        v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal);
+    ConeTracingSetup::applyCellGather(gather, frame, anisotropic, cellSize, false, v.bounceIrradiance,
+        v.bounceIrradianceBack, v.bounceCellNormal);
     gather.use();
     m_cells.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -112,11 +134,7 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool fromBounced, bool compar
         voxels->dispatchOverCells();
     glMemoryBarrier(
         GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-
-    if (anisotropic)
-        m_builder.buildDirectional(frame.shaders, v.bounced, res, v.bouncedDirectional);
-    else
-        m_builder.buildBox(frame.shaders, v.bounced);
+    buildMips(frame);
 }
 
 std::vector<double> VoxelBouncePass::readResiduals(int count)
@@ -155,6 +173,8 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // An interactive view starts a new solve from the last one where the voxels are the same, so that a light
     // edit brightens or dims the bounces smoothly instead of starting again from one bounce.
     bool warm = sameSolve || (progressive && !voxelsChanged && m_iterations > 0);
+    if (!warm)
+        startFromFirstBounce(frame);
     if (!sameSolve) {
         m_iterations = 0;
         m_residual = m_previousResidual = 0.0;
@@ -171,9 +191,9 @@ void VoxelBouncePass::execute(FrameContext& frame)
         const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearTexImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, zero);
         for (int slot = 0; slot < batch; ++slot) {
-            // The first iteration of a cold start gathers from the first-bounce volume; its reinjection then
+            // The first iteration of a cold start gathers from the first-bounce light; its reinjection then
             // overwrites every occupied voxel, and the clear before it every other.
-            iterate(frame, warm, warm, slot);
+            iterate(frame, warm, slot);
             warm = true;
         }
         ran += batch;
@@ -199,7 +219,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     }
     // With anisotropic mips cones read the directional chains only; the box levels are filtered when
     // something looks at them (Renderer's ensureBoxMips), as for the first-bounce volume.
-    if (!(frame.settings.anisotropicMips && v.directional))
+    if (!frame.settings.anisotropicMips)
         v.bouncedDirectional = gl::Texture();
     v.bounceProgress = { m_iterations, m_residual, m_done };
     m_radianceVersion = v.radianceVersion;

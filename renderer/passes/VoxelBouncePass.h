@@ -50,11 +50,14 @@ private:
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
     void allocate(VoxelVolume& v, int cells);
+    /** Makes the first-bounce light the current iterate: level 0 copied, the levels cones read filtered. */
+    void startFromFirstBounce(FrameContext& frame);
+    void buildMips(FrameContext& frame);
     /**
-     * One iteration: gather the cells from @p fromBounced (else the first-bounce volume), reinject, filter;
-     * its residual's sums go to texel pair @p slot of m_residualSums.
+     * One iteration: gather the cells from the current iterate, reinject, filter; with @p compare, the
+     * residual's sums go to texel pair @p slot of m_residualSums.
      */
-    void iterate(FrameContext& frame, bool fromBounced, bool compare, int slot);
+    void iterate(FrameContext& frame, bool compare, int slot);
     /** The residuals of the first @p count slots: sum of |change| over sum of radiance (one readback). */
     std::vector<double> readResiduals(int count);
     static constexpr int kResidualSlots = 8; ///< iterations whose residuals one readback collects

@@ -133,7 +133,7 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
 void VoxelIrradiancePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    const bool anisotropic = frame.settings.anisotropicMips && v.directional;
+    const bool anisotropic = frame.settings.anisotropicMips && v.coneDirectional();
     const gl::Program& program
         = frame.shaders.program({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
             { "irradiance/GatherCells.comp" },
@@ -149,7 +149,7 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
-    ConeTracingSetup::applyCellGather(program, frame, anisotropic, true, cellSize,
+    ConeTracingSetup::applyCellGather(program, frame, anisotropic, cellSize,
         FrameRules::ambientOcclusionNeeded(frame), v.irradiance, v.irradianceBack, v.irradianceNormal);
     program.use();
     m_requested.dispatchOverCells();

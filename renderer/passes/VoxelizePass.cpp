@@ -1,6 +1,7 @@
 #include "passes/VoxelizePass.h"
 
 #include "core/FrameContext.h"
+#include "core/FrameRules.h"
 
 #include <utility>
 
@@ -63,7 +64,8 @@ void VoxelizePass::ensureResources(FrameContext& frame)
         return;
     const int levels = v.frame.levelCount();
     material(&v.albedo, &v.normal, &v.emission);
-    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, levels);
+    // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
+    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, FrameRules::bounceVolumeUsed(frame) ? 1 : levels);
     v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }

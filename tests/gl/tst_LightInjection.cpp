@@ -63,6 +63,8 @@ void LightInjectionTest::render(
     // Emitters are area lights while direct light is on, and their emission then stays out of the voxels:
     // the tests of emission in the voxels turn direct light off (they have no other light).
     settings.direct = !emissionInVoxels;
+    // One bounce: the first-bounce volume keeps its own levels (with more, the bounced volume has them).
+    settings.bounces = 1;
     settings.anisotropicMips = anisotropic;
     settings.voxelResolution = resolution;
     settings.shadowMapSize = 512;

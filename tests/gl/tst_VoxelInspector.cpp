@@ -81,12 +81,13 @@ void VoxelInspectorTest::coarserLevelsNeverListMore()
 
 // With anisotropic mips (the default) cones never read the box-filtered levels, so they are filtered only
 // when inspected: they must still show the voxels' current light, not the light they were last filtered for.
+// With every bounce in the voxels (the default) that light is the bounced volume's, linear in the emission.
 void VoxelInspectorTest::coarseRadianceFollowsTheLight()
 {
     const auto levelSum = [this](int level) {
         int size = 0;
         double sum = 0.0;
-        const std::vector<float> texels = m_gl.renderer->readVoxels("radiance", level, size);
+        const std::vector<float> texels = m_gl.renderer->readVoxels("bounced", level, size);
         for (std::size_t i = 0; i < texels.size(); i += 4)
             sum += double(texels[i]) + texels[i + 1] + texels[i + 2];
         return sum;

@@ -49,11 +49,15 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
 
     const std::vector<render::VoxelTextureMemory> memory = renderer.voxelMemory();
     std::size_t total = 0;
-    bool sawRadiance = false;
+    bool sawRadiance = false, sawBounced = false;
     int directional = 0;
     for (const render::VoxelTextureMemory& m : memory) {
         total += m.totalBytes();
-        if (m.name.rfind("radiance, directional", 0) == 0) {
+        // With every bounce in the voxels (the default) cones trace the bounced volume: it has the levels,
+        // and the first-bounce radiance keeps level 0 alone, as the iteration's source.
+        QVERIFY2(
+            m.name.rfind("radiance, directional", 0) != 0, "first-bounce radiance has no levels to trace");
+        if (m.name.rfind("bounced, directional", 0) == 0) {
             // Six tiles with five empty gaps between them (gl::Texture::create3DStack), levels 8, 4, 2, 1.
             ++directional;
             QCOMPARE(m.levelBytes.size(), std::size_t(4));
@@ -62,9 +66,14 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
                 QCOMPARE(m.levelBytes[level], 11 * side * side * side * 8);
             }
         }
-        if (m.name != "radiance")
+        if (m.name == "radiance") {
+            sawRadiance = true;
+            QCOMPARE(m.format, std::string("rgba16f"));
+            QCOMPARE(m.levelBytes, std::vector<std::size_t> { 16 * 16 * 16 * 8 });
+        }
+        if (m.name != "bounced")
             continue;
-        sawRadiance = true;
+        sawBounced = true;
         QCOMPARE(m.format, std::string("rgba16f"));
         QCOMPARE(m.levelBytes.size(), std::size_t(5)); // 16, 8, 4, 2, 1
         for (std::size_t level = 0; level < m.levelBytes.size(); ++level) {
@@ -72,7 +81,7 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
             QCOMPARE(m.levelBytes[level], side * side * side * 8);
         }
     }
-    QVERIFY(sawRadiance);
+    QVERIFY(sawRadiance && sawBounced);
     QCOMPARE(directional, anisotropic ? 1 : 0);
     QCOMPARE(total, renderer.voxelBytes());
     QCOMPARE(total, stats.voxelBytes);
