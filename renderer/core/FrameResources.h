@@ -28,8 +28,6 @@ struct BounceProgress {
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
     VoxelGridFrame frame;
-    /// Static meshes only, kept while dynamic ones move; allocated only when the scene has dynamic meshes.
-    gl::Texture staticAlbedo, staticNormal, staticEmission;
     /// The voxelizer averages into these in place, as 32-bit words (common/VoxelWords.glsl).
     gl::Texture albedo; ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
     gl::Texture normal; ///< rgba8 snorm: averaged unit normal (shorter where normals cancel).

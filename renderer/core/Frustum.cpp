@@ -16,6 +16,18 @@ Frustum::Frustum(const glm::mat4& viewProjection, const glm::vec3& origin)
     }
 }
 
+Frustum Frustum::ofBox(const Aabb& box)
+{
+    // Maps [0, size] on each axis, relative to the box's min corner, to the clip range [-1, 1].
+    const glm::vec3 size = glm::max(box.max - box.min, glm::vec3(1e-30f));
+    glm::mat4 toClip(1.0f);
+    for (int axis = 0; axis < 3; ++axis) {
+        toClip[axis][axis] = 2.0f / size[axis];
+        toClip[3][axis] = -1.0f;
+    }
+    return Frustum(toClip, box.min);
+}
+
 bool Frustum::mayContain(const Aabb& box) const
 {
     if (box.isEmpty())

@@ -23,6 +23,8 @@ public:
      * a world-space matrix times translate(origin) is the same map, but it has already lost precision.
      */
     Frustum(const glm::mat4& viewProjection, const glm::vec3& origin);
+    /** The six faces of a box (not empty), for culling against a region of the grid. */
+    static Frustum ofBox(const Aabb& box);
 
     /** False only when the box lies wholly outside one plane: conservative, a box across a corner passes. */
     bool mayContain(const Aabb& box) const;

@@ -267,9 +267,7 @@ std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
         return total;
     };
     const std::uint64_t n = std::uint64_t(voxelResolution);
-    // Albedo, normal and emission, 4 bytes each; the static layer too, which only scenes with moving
-    // objects keep.
-    std::uint64_t bytes = (scene.movingObjects ? 2 : 1) * 3 * chain(n, 4, false);
+    std::uint64_t bytes = 3 * chain(n, 4, false); // albedo, normal and emission, 4 bytes each
     if (scene.areaLights)
         bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
     // The volume cones trace, rgba16f with its levels, and with anisotropic mips six directional chains from

@@ -102,11 +102,11 @@ struct RenderSettings {
     /** Checks ranges together; returns an empty string or the first problem. */
     std::string validate() const;
     /**
-     * Bytes of every voxel texture the renderer allocates for this grid: albedo/normal/emission (twice for
-     * a scene with moving objects, which keeps a static layer), the radiance mip chain and, with anisotropic
-     * mips, six directional chains, the opacity chain for a scene with area lights, and the bounce and cache
-     * cells. Equals Renderer::voxelBytes() once a frame has been rendered (tested). The budget check counts
-     * what the scene may add: the most the grid can need.
+     * Bytes of every voxel texture the renderer allocates for this grid: albedo/normal/emission, the radiance
+     * mip chain and, with anisotropic mips, six directional chains (the bounced volume's when bounces are
+     * carried by the voxels), the opacity chain for a scene with area lights, and the bounce and cache cells.
+     * Equals Renderer::voxelBytes() once a frame has been rendered (tested). The budget check counts what the
+     * scene may add: the most the grid can need.
      */
     std::uint64_t voxelMemoryBytes(VoxelSceneNeeds scene = {}) const;
     /** (key, current value, meaning) for --help and --stats. */

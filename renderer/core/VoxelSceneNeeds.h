@@ -4,7 +4,6 @@ namespace vct::render {
 
 /** What a scene adds to the voxel textures (RenderSettings::voxelMemoryBytes). */
 struct VoxelSceneNeeds {
-    bool movingObjects = true; ///< a static layer, kept while dynamic meshes are redone
     bool areaLights = true; ///< an opacity chain for the area lights' shadow cones
     bool lightSources = true; ///< anything to bounce: without light there is no bounced volume
 };

@@ -63,12 +63,10 @@ std::size_t VoxelTextureMemory::totalBytes() const
 std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
 {
     std::vector<VoxelTextureMemory> list;
-    const std::pair<const char*, const gl::Texture*> named[] = { { "static albedo", &v.staticAlbedo },
-        { "static normal", &v.staticNormal }, { "static emission", &v.staticEmission },
-        { "albedo", &v.albedo }, { "normal", &v.normal }, { "emission", &v.emission },
-        { "radiance", &v.radiance }, { "opacity", &v.opacity },
-        { "radiance, directional (+x -x +y -y +z -z)", &v.directional }, { "bounced", &v.bounced },
-        { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
+    const std::pair<const char*, const gl::Texture*> named[] = { { "albedo", &v.albedo },
+        { "normal", &v.normal }, { "emission", &v.emission }, { "radiance", &v.radiance },
+        { "opacity", &v.opacity }, { "radiance, directional (+x -x +y -y +z -z)", &v.directional },
+        { "bounced", &v.bounced }, { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
         { "bounce cells", &v.bounceIrradiance }, { "bounce cells, back faces", &v.bounceIrradianceBack },
         { "bounce cell normals", &v.bounceCellNormal }, { "irradiance cache", &v.irradiance },
         { "irradiance cache, back faces", &v.irradianceBack },

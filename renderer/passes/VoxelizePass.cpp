@@ -2,6 +2,7 @@
 
 #include "core/FrameContext.h"
 #include "core/FrameRules.h"
+#include "core/Frustum.h"
 
 #include <utility>
 
@@ -24,8 +25,7 @@ PassDecision VoxelizePass::plan(const FrameContext& frame)
         return { PassDecision::Action::Run,
             "a static material changed: re-voxelizing the objects that use it" };
     if (m_dynamicVersion != frame.versions.dynamicVoxels())
-        return { PassDecision::Action::Run,
-            "a dynamic object moved: static voxels kept, dynamic ones redone" };
+        return { PassDecision::Action::Run, "a dynamic object moved: redoing the voxels around it" };
     return { PassDecision::Action::Reuse, "geometry unchanged" };
 }
 
@@ -40,79 +40,36 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
-    // The static layer is kept only for moving objects to be redone on top of; without them the static
-    // voxels are the final ones.
-    const bool staticLayer = frame.scene.hasDynamicMeshes();
-    if (v.albedo && v.albedo.width() == res && bool(v.staticAlbedo) == staticLayer)
-        return;
-    m_staticGeometry = 0; // every layer is rebuilt in its new textures
-    v.dynamicBounds = Aabb {};
-    // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
-    auto material = [&](gl::Texture* albedo, gl::Texture* normal, gl::Texture* emission) {
-        *albedo = gl::Texture::create3D(GL_RGBA8, res);
-        *normal = gl::Texture::create3D(GL_RGBA8_SNORM, res);
-        *emission = gl::Texture::create3D(GL_R11F_G11F_B10F, res);
-        for (gl::Texture* t : { albedo, normal, emission })
-            t->setFilter(GL_NEAREST, GL_NEAREST);
-    };
-    if (staticLayer)
-        material(&v.staticAlbedo, &v.staticNormal, &v.staticEmission);
-    else
-        for (gl::Texture* t : { &v.staticAlbedo, &v.staticNormal, &v.staticEmission })
-            *t = gl::Texture {};
     if (v.albedo && v.albedo.width() == res)
         return;
-    const int levels = v.frame.levelCount();
-    material(&v.albedo, &v.normal, &v.emission);
+    m_staticGeometry = 0; // rebuilt whole in the new textures
+    v.dynamicBounds = Aabb {};
+    // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
+    v.albedo = gl::Texture::create3D(GL_RGBA8, res);
+    v.normal = gl::Texture::create3D(GL_RGBA8_SNORM, res);
+    v.emission = gl::Texture::create3D(GL_R11F_G11F_B10F, res);
     // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
-    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, FrameRules::bounceVolumeUsed(frame) ? 1 : levels);
+    v.radiance = gl::Texture::create3D(
+        GL_RGBA16F, res, FrameRules::bounceVolumeUsed(frame) ? 1 : v.frame.levelCount());
     v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
 
-namespace {
-
-struct MaterialTextures {
-    const gl::Texture* albedo;
-    const gl::Texture* normal;
-    const gl::Texture* emission;
-};
-
-MaterialTextures materialTextures(const VoxelVolume& v, bool staticLayer)
+void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)
 {
-    if (staticLayer)
-        return { &v.staticAlbedo, &v.staticNormal, &v.staticEmission };
-    return { &v.albedo, &v.normal, &v.emission };
-}
-
-} // namespace
-
-void VoxelizePass::prepare(
-    FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region)
-{
-    // The voxelizer averages into what the region holds: nothing (a clear), or the static layer's values
-    // (merging), which a moving object's first fragment in a voxel replaces. A copy or a clear is far cheaper
-    // on llvmpipe than a shader writing three images per voxel.
+    // The voxelizer averages into what the region holds, so it starts empty. A clear is far cheaper on
+    // llvmpipe than a shader writing three images per voxel.
     const VoxelVolume& v = frame.voxels;
-    const MaterialTextures to = materialTextures(v, intoStaticLayer);
-    const MaterialTextures from = materialTextures(v, true);
-    const gl::Texture* outputs[3] = { to.albedo, to.normal, to.emission };
-    const gl::Texture* statics[3] = { from.albedo, from.normal, from.emission };
     const glm::ivec3 lo = region.lo, size = region.size();
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    for (int i = 0; i < 3; ++i) {
-        if (mergeStatic)
-            glCopyImageSubData(statics[i]->id(), GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, outputs[i]->id(),
-                GL_TEXTURE_3D, 0, lo.x, lo.y, lo.z, size.x, size.y, size.z);
-        else
-            glClearTexSubImage(outputs[i]->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
-                outputs[i] == to.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
-    }
+    for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
+        glClearTexSubImage(t->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
+            t == &v.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, bool intoStaticLayer,
-    const VoxelRegion& region, OccupiedCellList& touched)
+void VoxelizePass::accumulate(
+    FrameContext& frame, MeshFilter layer, const VoxelRegion& region, OccupiedCellList& touched)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
@@ -127,11 +84,15 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, bool into
     if (nvConservative)
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
     // The three material textures are written as 32-bit words (common/VoxelWords.glsl).
-    const MaterialTextures target = materialTextures(v, intoStaticLayer);
     int unit = 0;
-    for (const gl::Texture* t : { target.albedo, target.normal, target.emission })
+    for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
         t->bindImage(GLuint(unit++), 0, GL_READ_WRITE, GL_R32UI);
-    const MeshFilter layer = dynamicMeshes ? MeshFilter::Dynamic : MeshFilter::Static;
+    // Clusters of triangles that cannot reach the region are not drawn; conservative enlargement and the
+    // depth spread reach one voxel beyond a triangle.
+    const float voxel = v.frame.voxelSize();
+    const Aabb reach { v.frame.origin + glm::vec3(region.lo - 1) * voxel,
+        v.frame.origin + glm::vec3(region.hi + 1) * voxel };
+    const Frustum regionBox = Frustum::ofBox(reach);
     for (const bool emissive : { false, true }) {
         const gl::Program& program = emissive ? *m_voxelizeEmissive : *m_voxelize;
         program.use();
@@ -146,6 +107,7 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, bool into
         DrawOptions options;
         options.layer = layer;
         options.materials = [emissive](const Material& m) { return m.isEmissive() == emissive; };
+        options.visibleIn = &regionBox;
         frame.scene.draw(program, options, 0);
     }
     if (nvConservative)
@@ -156,11 +118,10 @@ void VoxelizePass::accumulate(FrameContext& frame, bool dynamicMeshes, bool into
         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void VoxelizePass::resolve(FrameContext& frame, bool intoStaticLayer, const OccupiedCellList& touched)
+void VoxelizePass::resolve(FrameContext& frame, const OccupiedCellList& touched)
 {
-    const MaterialTextures target = materialTextures(frame.voxels, intoStaticLayer);
-    target.albedo->bindImage(0, 0, GL_READ_WRITE, GL_R32UI);
-    target.normal->bindImage(1, 0, GL_READ_WRITE, GL_R32UI);
+    frame.voxels.albedo.bindImage(0, 0, GL_READ_WRITE, GL_R32UI);
+    frame.voxels.normal.bindImage(1, 0, GL_READ_WRITE, GL_R32UI);
     m_resolve->use();
     touched.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -170,52 +131,42 @@ void VoxelizePass::execute(FrameContext& frame)
 {
     ensureResources(frame);
     VoxelVolume& v = frame.voxels;
-    const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
     const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry;
-    const bool staticMaterialChanged = !staticChanged && m_staticMaterials != frame.versions.staticMaterials;
-    // A material edit redoes the static voxels around the meshes that use it: every static mesh is drawn, but
-    // fragments outside that box are dropped and only the box is resolved.
-    const VoxelRegion staticRegion = staticChanged ? whole
-        : staticMaterialChanged ? VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin)
-                                : VoxelRegion {};
-    if (!staticRegion.isEmpty()) {
-        // A material edit keeps the occupied voxels, so the full rebuild's list of them stays whole.
-        OccupiedCellList& touched = staticChanged ? v.staticVoxels : m_editedVoxels;
-        // Without dynamic meshes the static layer is the final one: voxelize straight into it.
-        prepare(frame, false, hasDynamic, staticRegion);
-        accumulate(frame, false, hasDynamic, staticRegion, touched);
-        resolve(frame, hasDynamic, touched);
+    const bool dynamicMoved = hasDynamic && m_dynamicVersion != frame.versions.dynamicVoxels();
+    // What to redo: the whole grid after a static change; else around the static meshes whose material
+    // changed, and around the moving objects, now and before a move. The region is cleared and everything in
+    // it voxelized again, static and dynamic meshes together, so a voxel both reach holds the mean of both,
+    // as after a full rebuild. There is no static layer to copy back from: redrawing the static triangles
+    // near the region (culled by cluster, then by triangle in the geometry shader) costs less memory than
+    // keeping a copy of the whole grid.
+    VoxelRegion region;
+    if (staticChanged) {
+        region = VoxelRegion::whole(v.frame.resolution);
+    } else {
+        if (m_staticMaterials != frame.versions.staticMaterials)
+            region = VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin);
+        if (hasDynamic)
+            region = region.united(VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin));
+        if (dynamicMoved)
+            region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+    }
+    if (!region.isEmpty()) {
+        clear(frame, region);
+        // A full rebuild lists every static voxel; a partial one finds only voxels that list already names.
+        OccupiedCellList& staticTouched = staticChanged ? v.staticVoxels : m_regionStaticVoxels;
+        accumulate(frame, MeshFilter::Static, region, staticTouched);
+        // The dynamic list names every dynamic voxel: the region always holds the objects as they are now.
+        if (hasDynamic)
+            accumulate(frame, MeshFilter::Dynamic, region, v.dynamicVoxels);
+        resolve(frame, staticTouched);
+        if (hasDynamic)
+            resolve(frame, v.dynamicVoxels);
     }
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
-    VoxelRegion changed = staticRegion;
-    bool dynamicMoved = false;
-    if (hasDynamic) {
-        dynamicMoved = m_dynamicVersion != frame.versions.dynamicVoxels();
-        // Always where the objects are now, so their list names all their voxels; where they were too after a
-        // move; wherever the static layer changed (the final textures merge both there). After a static
-        // rebuild the final textures start as a copy of the whole static layer.
-        const VoxelRegion now = VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin);
-        VoxelRegion region = now.united(staticRegion);
-        if (dynamicMoved)
-            region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
-        if (staticChanged) {
-            const glm::ivec3 size(v.frame.resolution);
-            for (const auto& [from, to] : { std::pair { &v.staticAlbedo, &v.albedo },
-                     std::pair { &v.staticNormal, &v.normal }, std::pair { &v.staticEmission, &v.emission } })
-                glCopyImageSubData(from->id(), GL_TEXTURE_3D, 0, 0, 0, 0, to->id(), GL_TEXTURE_3D, 0, 0, 0, 0,
-                    size.x, size.y, size.z);
-            region = now;
-        }
-        if (!staticChanged)
-            prepare(frame, true, false, region);
-        accumulate(frame, true, false, region, v.dynamicVoxels);
-        resolve(frame, false, v.dynamicVoxels);
-        changed = staticChanged ? whole : region;
-    }
-    v.changedRegion = changed;
+    v.changedRegion = region;
     v.onlyDynamicChanged = !staticChanged;
     v.dynamicMoved = dynamicMoved;
     v.previousDynamicBounds = v.dynamicBounds;

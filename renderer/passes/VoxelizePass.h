@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/GpuScene.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "core/VoxelRegion.h"
@@ -12,9 +13,8 @@ namespace vct::render {
 
 /**
  * Rasterises the triangles into the voxel grid (dominant-axis projection in a geometry shader, conservative
- * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). Static meshes
- * are voxelized into their own layer when they change; dynamic meshes are redone on top of it whenever they
- * move.
+ * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). A change of
+ * the static meshes rebuilds the grid; a moving object or a material edit rebuilds the region around it.
  */
 class VoxelizePass final : public RenderPass {
 public:
@@ -26,20 +26,20 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
-    /** Clears the region of the layer about to be voxelized, or copies the static layer there (merging). */
-    void prepare(FrameContext& frame, bool mergeStatic, bool intoStaticLayer, const VoxelRegion& region);
-    /** Averages the fragments of one layer's meshes into the region, listing each voxel reached into @p
-     * touched. */
-    void accumulate(FrameContext& frame, bool dynamicMeshes, bool intoStaticLayer, const VoxelRegion& region,
-        OccupiedCellList& touched);
+    /** Empties the region's albedo, normal and emission, which the voxelizer then averages into. */
+    void clear(FrameContext& frame, const VoxelRegion& region);
+    /** Averages the fragments of one layer's meshes into the region, listing each voxel reached first into
+     * @p touched. */
+    void accumulate(
+        FrameContext& frame, MeshFilter layer, const VoxelRegion& region, OccupiedCellList& touched);
     /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
-    void resolve(FrameContext& frame, bool intoStaticLayer, const OccupiedCellList& touched);
+    void resolve(FrameContext& frame, const OccupiedCellList& touched);
 
     const gl::Program* m_voxelize = nullptr;
     const gl::Program* m_voxelizeEmissive
         = nullptr; ///< the EMISSIVE variant, for meshes whose material emits
     const gl::Program* m_resolve = nullptr;
-    OccupiedCellList m_editedVoxels; ///< the static voxels a material edit redid
+    OccupiedCellList m_regionStaticVoxels; ///< the static voxels a partial update redid
     gl::Framebuffer m_framebuffer;
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;

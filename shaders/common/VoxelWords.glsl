@@ -9,14 +9,8 @@
 //   emission r11f_g11f_b10f: mean emitted radiance, the count taken from the albedo word.
 // Counts stop at 254: past that, a new fragment still moves the mean by 1/255 of its difference.
 
-const uint kResolvedCount = 255u;
+// The voxelizer starts from cleared words (passes/VoxelizePass), so a count of 0 means an empty voxel.
 const uint kMaxCount = 254u;
-
-uint albedoCount(uint word)
-{
-    uint n = word >> 24;
-    return n == kResolvedCount ? 0u : n; // resolved content is replaced, not averaged with (a moving object)
-}
 
 uint packAlbedoWord(vec3 albedo, uint count)
 {

@@ -1,7 +1,6 @@
 // Marks the voxels the voxelizer reached as done (common/VoxelWords.glsl): albedo's count becomes 255, read as
 // opacity 1, and normal's becomes 0, which samplers read as w = 0. The emission word needs nothing. The
-// voxelizer listed these voxels as it reached them; the pass has already cleared every voxel of the region, or
-// copied the static layer's values there when merging, so a moving object never erases the static scene.
+// voxelizer listed these voxels as it reached them.
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;

@@ -1,5 +1,5 @@
 // Averages this fragment's material into every voxel its pixel column crosses (common/VoxelWords.glsl), so
-// overlapping fragments average instead of the last one winning. The fragment whose update finds a voxel empty
+// overlapping fragments, static and dynamic alike, average instead of the last one winning. The fragment whose update finds a voxel empty
 // lists it (core/OccupiedCellList) for the resolve and, after a full rebuild, for light injection: no pass has
 // to search the grid for the voxels drawn.
 // EMISSIVE: the variant for emissive materials (passes/VoxelizePass). Other materials leave the emission word
@@ -35,14 +35,13 @@ ivec3 unswizzle(ivec3 c, int axis)
     return axis == 0 ? c.zxy : (axis == 1 ? c.yzx : c.xyz);
 }
 
-// Returns how many fragments the voxel held before this one (0: it was empty or held resolved static
-// content), or -1 if every attempt lost.
+// Returns how many fragments the voxel held before this one (0: it was empty), or -1 if every attempt lost.
 int addAlbedo(ivec3 voxel, vec3 albedo)
 {
     uint seen = imageLoad(uAlbedoWords, voxel).r;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         uint old = seen;
-        uint n = albedoCount(old);
+        uint n = old >> 24;
         vec3 mean = n == 0u ? albedo : mix(unpackUnorm4x8(old).rgb, albedo, 1.0 / float(n + 1u));
         seen = imageAtomicCompSwap(uAlbedoWords, voxel, old, packAlbedoWord(mean, min(n + 1u, kMaxCount)));
         if (seen == old)
@@ -56,7 +55,7 @@ void addNormal(ivec3 voxel, vec3 normal)
     uint seen = imageLoad(uNormalWords, voxel).r;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         uint old = seen;
-        uint n = old >> 24; // 0 once resolved: a moving object's normals replace the static ones
+        uint n = old >> 24;
         vec3 mean = n == 0u ? normal : mix(unpackNormalWord(old), normal, 1.0 / float(n + 1u));
         seen = imageAtomicCompSwap(uNormalWords, voxel, old, packNormalWord(mean, min(n + 1u, kMaxCount)));
         if (seen == old)

@@ -11,6 +11,8 @@ in vec2 vUv[];
 
 uniform int uResolution;
 uniform bool uConservative;
+uniform ivec3 uRegionLo; // only voxels in [lo, hi) are being redone
+uniform ivec3 uRegionHi;
 
 out vec3 gNormal;
 out vec2 gUv;
@@ -28,6 +30,12 @@ void main()
     vec3 faceNormal = cross(vGrid[1] - vGrid[0], vGrid[2] - vGrid[0]);
     if (!(dot(faceNormal, faceNormal) > 0.0))
         return; // zero area or non-finite: nothing to voxelize
+    // A triangle that cannot reach the region (conservative enlargement and the depth spread reach one voxel
+    // beyond it) is not rasterised at all: a moving object's update redraws the static triangles near it.
+    vec3 lowest = min(vGrid[0], min(vGrid[1], vGrid[2])) * float(uResolution);
+    vec3 highest = max(vGrid[0], max(vGrid[1], vGrid[2])) * float(uResolution);
+    if (any(lessThan(highest + 1.0, vec3(uRegionLo))) || any(greaterThanEqual(lowest - 1.0, vec3(uRegionHi))))
+        return;
     int axis = dominantAxis(faceNormal);
     vec3 p[3];
     for (int i = 0; i < 3; ++i)

@@ -15,6 +15,7 @@ private slots:
     void initTestCase();
     void movingDynamicMeshRevoxelizesOnlyItself();
     void cameraOnlyFrameReusesVoxels();
+    void objectOnTheFloorSharesItsVoxels();
 
 private:
     render::Scene scene() const;
@@ -96,6 +97,53 @@ void DynamicObjectTest::movingDynamicMeshRevoxelizesOnlyItself()
                                .arg(incremental.pixels[i][c])
                                .arg(full.pixels[i][c])));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// A moving object resting on the floor shares the floor's voxels: they hold the mean of both, the same after
+// a move as after a rebuild from scratch, and the floor is whole again where the object was.
+void DynamicObjectTest::objectOnTheFloorSharesItsVoxels()
+{
+    render::Scene onFloor = scene();
+    onFloor.materials.push_back({});
+    onFloor.materials[1].albedo = glm::vec3(0.9f, 0.1f, 0.1f);
+    onFloor.meshes[1] = test::makeTriangles(
+        test::quad({ 3.2f, 0.6f, 4.8f }, { 4.8f, 0.6f, 4.8f }, { 4.8f, 0.6f, 3.2f }, { 3.2f, 0.6f, 3.2f }),
+        1);
+    onFloor.meshes[1].dynamic = true;
+    render::RenderSettings settings;
+    settings.voxelResolution = 16;
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(onFloor);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
+    const render::Camera camera { { 8, 8, 30 }, { 8, 4, 8 }, { 0, 1, 0 }, 40.0f, 0.01f };
+    m_gl.renderer->renderFrame(camera, 16, 16);
+    const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(6.0f, 0.0f, 0.0f));
+    m_gl.renderer->setMeshTransform(1, moved);
+    m_gl.renderer->renderFrame(camera, 16, 16);
+    int size = 0;
+    const std::vector<float> incremental = m_gl.renderer->readVoxels("albedo", 0, size);
+
+    onFloor.meshes[1].transform = moved;
+    m_gl.renderer->setScene(onFloor);
+    m_gl.renderer->renderFrame(camera, 16, 16);
+    const std::vector<float> full = m_gl.renderer->readVoxels("albedo", 0, size);
+    QCOMPARE(incremental.size(), full.size());
+    for (std::size_t i = 0; i < full.size(); ++i)
+        QVERIFY2(std::abs(full[i] - incremental[i]) <= 2.0f / 255.0f,
+            qPrintable(QString("texel %1: %2 after the move, %3 from scratch")
+                           .arg(i)
+                           .arg(incremental[i])
+                           .arg(full[i])));
+    const auto albedoAt = [&](int x, int y, int z) {
+        const float* p = &full[((std::size_t(z) * size + y) * size + x) * 4];
+        return glm::vec3(p[0], p[1], p[2]);
+    };
+    const glm::vec3 shared = albedoAt(10, 0, 4), vacated = albedoAt(4, 0, 4);
+    // Floor 0.8 grey, object (0.9, 0.1, 0.1): a mix of both, whatever their fragment counts.
+    QVERIFY2(shared.r > 0.8f && shared.g > 0.2f && shared.g < 0.7f,
+        qPrintable(QString("shared voxel %1 %2 %3").arg(shared.r).arg(shared.g).arg(shared.b)));
+    QVERIFY2(glm::all(glm::lessThan(glm::abs(vacated - glm::vec3(0.8f)), glm::vec3(2.0f / 255.0f))),
+        qPrintable(QString("vacated voxel %1 %2 %3").arg(vacated.r).arg(vacated.g).arg(vacated.b)));
 }
 
 void DynamicObjectTest::cameraOnlyFrameReusesVoxels()

@@ -443,17 +443,18 @@ void HardCasesTest::settingsAtTheirLimits()
 // the cone weights integrate the cosine lobe to one and every cone ends on an emitting wall. That holds with
 // direction-dependent mips; box-filtered mips let wide cones see through the walls at coarse levels and
 // lose most of the bounce, a bias the test measures and reports (docs/STABILITY.md) rather than hides.
-// The other end of the grid range: 512^3 needs 4.7 GiB of voxel textures. The settings say so and refuse it
-// under the default budget instead of letting the GL fail mid-frame; the settings in use stay as they were.
+// The other end of the grid range: 512^3 with directional chains needs 4.8 GiB of voxel textures. The
+// settings say so and refuse it under the default budget instead of letting the GL fail mid-frame; the
+// settings in use stay as they were.
 void HardCasesTest::gridBeyondTheMemoryBudgetIsRefused()
 {
     render::RenderSettings settings;
     settings.voxelResolution = 32;
-    settings.anisotropicMips = false; // the figures below are for one box-filtered chain, without the cache
-    settings.irradianceCache = false;
-    settings.bounces = 1; // nor the bounce volume
+    settings.irradianceCache = false; // the figures below are for one radiance volume with directional chains
+    settings.bounces = 1;
     const std::string problem = settings.set("voxel_res", "512");
-    QVERIFY2(problem.find("voxel_res=512 needs 4.7 GiB") != std::string::npos, problem.c_str());
+    QVERIFY2(problem.find("voxel_res=512 with anisotropic mips needs 4.8 GiB") != std::string::npos,
+        problem.c_str());
     QVERIFY2(problem.find("voxel_budget_mb=4096") != std::string::npos, problem.c_str());
     QCOMPARE(settings.voxelResolution, 32);
     // With the budget raised, the same grid is accepted: the limit is memory, not the code.
@@ -475,10 +476,10 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
                 settings.irradianceCellSize = resolution == 8 ? 4 : 2;
                 render(room(), settings, 16);
                 QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
-                    settings.voxelMemoryBytes({ .movingObjects = false, .areaLights = false }));
+                    settings.voxelMemoryBytes({ .areaLights = false }));
             }
-    // What a scene adds: a static layer for a moving object, an opacity chain for an area light's shadows;
-    // and nothing once they are gone.
+    // What a scene adds: an opacity chain for an area light's shadows, and nothing once it is gone; a moving
+    // object adds nothing (its updates redraw the static triangles near it instead of keeping a copy).
     render::Scene scene = room();
     scene.meshes[1].dynamic = true;
     render::SurfaceLight rect;
@@ -489,8 +490,7 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
     render(scene, settings, 16);
     QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
     render(room(), settings, 16);
-    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
-        settings.voxelMemoryBytes({ .movingObjects = false, .areaLights = false }));
+    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes({ .areaLights = false }));
 }
 
 void HardCasesTest::whiteFurnace()
