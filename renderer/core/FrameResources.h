@@ -31,7 +31,8 @@ struct VoxelVolume {
     /// The voxelizer averages into these in place, as 32-bit words (common/VoxelWords.glsl).
     gl::Texture albedo; ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
     gl::Texture normal; ///< rgba8 snorm: averaged unit normal (shorter where normals cancel).
-    gl::Texture emission; ///< r11f_g11f_b10f: averaged emitted radiance.
+    gl::Texture
+        emission; ///< r11f_g11f_b10f: averaged emitted radiance; only for scenes with emissive materials.
     gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
     /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along
     /// that axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones
@@ -48,7 +49,8 @@ struct VoxelVolume {
     gl::Texture bouncedDirectional;
     /// The bounce iteration's gather, one texel per cell of RenderSettings::bounceCellSize^3 voxels, laid out
     /// as the irradiance cache's (rgba16f: sum_i w_i L_i along the cell normal, against it for two-sided
-    /// cells, and the cell normal with w = 0 none, 1 one-sided, 2 two-sided), but over every occupied cell.
+    /// cells, and the cell normal, rgba8 snorm, with w = 0 none, 0.5 one-sided, 1 two-sided), but over every
+    /// occupied cell.
     gl::Texture bounceIrradiance;
     gl::Texture bounceIrradianceBack;
     gl::Texture bounceCellNormal;
@@ -56,9 +58,9 @@ struct VoxelVolume {
     /// RenderSettings::irradianceCellSize^3 voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones
     /// gathered from the cell's surface along its normal (irradiance) and, for two-sided cells, against it
     /// (irradianceBack), a = ambient visibility, a = -1 where not gathered; irradianceNormal: the cell
-    /// normal, w = 0 none, 1 one-sided, 2 two-sided. Only cells some traced pixel looks up are gathered:
-    /// irradianceRequested (r32ui) is 1 where a cell was gathered for the current voxel light, 0 elsewhere,
-    /// where the three hold their cleared values.
+    /// normal (rgba8 snorm), w = 0 none, 0.5 one-sided, 1 two-sided. Only cells some traced pixel looks up
+    /// are gathered: irradianceRequested (r32ui) is 1 where a cell was gathered for the current voxel light,
+    /// 0 elsewhere, where the three hold their cleared values.
     gl::Texture irradiance;
     gl::Texture irradianceBack;
     gl::Texture irradianceNormal;

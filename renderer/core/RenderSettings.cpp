@@ -267,7 +267,8 @@ std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
         return total;
     };
     const std::uint64_t n = std::uint64_t(voxelResolution);
-    std::uint64_t bytes = 3 * chain(n, 4, false); // albedo, normal and emission, 4 bytes each
+    // Albedo and normal, 4 bytes each; emission too, for a scene with emissive materials.
+    std::uint64_t bytes = (scene.emission ? 3 : 2) * chain(n, 4, false);
     if (scene.areaLights)
         bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
     // The volume cones trace, rgba16f with its levels, and with anisotropic mips six directional chains from
@@ -279,14 +280,15 @@ std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
         bytes += chain(n, 8, true);
     if (anisotropicMips && n >= 2)
         bytes += 11 * chain(n / 2, 8, true);
-    if (bounced) { // the bounce cells (front, back, normal, rgba16f)
+    // Cells of the bounce gather and of the irradiance cache: front and back rgba16f, normal rgba8 snorm; the
+    // cache also keeps which cells were gathered (r32ui).
+    if (bounced) {
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(bounceCellSize), 1);
-        bytes += 3 * chain(cells, 8, false);
+        bytes += 2 * chain(cells, 8, false) + chain(cells, 4, false);
     }
-    if (irradianceCache) { // irradiance front and back, cell normals, rgba16f; which cells were gathered,
-                           // r32ui
+    if (irradianceCache) {
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1);
-        bytes += 3 * chain(cells, 8, false) + chain(cells, 4, false);
+        bytes += 2 * chain(cells, 8, false) + 2 * chain(cells, 4, false);
     }
     return bytes;
 }

@@ -477,6 +477,11 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
                 GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
             return data;
         }
+    if (channel == "emission" && !v.emission && v.albedo) {
+        // A scene without emissive materials keeps no emission volume: nothing is emitted anywhere.
+        size = std::max(1, v.frame.resolution >> level);
+        return std::vector<float>(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4, 0.0f);
+    }
     const gl::Texture* texture = channel == "albedo" ? &v.albedo
         : channel == "normal"                        ? &v.normal
         : channel == "emission"                      ? &v.emission

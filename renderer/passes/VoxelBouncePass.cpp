@@ -62,7 +62,8 @@ void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
         v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.frame.levelCount());
     if (!v.bounceIrradiance || v.bounceIrradiance.width() != cells)
         for (gl::Texture* t : { &v.bounceIrradiance, &v.bounceIrradianceBack, &v.bounceCellNormal }) {
-            *t = gl::Texture::create3D(GL_RGBA16F, cells);
+            // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
+            *t = gl::Texture::create3D(t == &v.bounceCellNormal ? GL_RGBA8_SNORM : GL_RGBA16F, cells);
             t->setFilter(GL_NEAREST, GL_NEAREST);
         }
     if (!m_residualSums)

@@ -55,7 +55,8 @@ void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
 {
     if (!v.irradiance || v.irradiance.width() != cells) {
         for (gl::Texture* t : { &v.irradiance, &v.irradianceBack, &v.irradianceNormal }) {
-            *t = gl::Texture::create3D(GL_RGBA16F, cells);
+            // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
+            *t = gl::Texture::create3D(t == &v.irradianceNormal ? GL_RGBA8_SNORM : GL_RGBA16F, cells);
             t->setFilter(GL_NEAREST, GL_NEAREST);
         }
         v.irradianceRequested = gl::Texture::create3D(GL_R32UI, cells);

@@ -40,19 +40,39 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     }
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
-    if (v.albedo && v.albedo.width() == res)
+    if (v.albedo && v.albedo.width() == res) {
+        ensureEmission(frame);
         return;
+    }
     m_staticGeometry = 0; // rebuilt whole in the new textures
     v.dynamicBounds = Aabb {};
     // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
     v.albedo = gl::Texture::create3D(GL_RGBA8, res);
     v.normal = gl::Texture::create3D(GL_RGBA8_SNORM, res);
-    v.emission = gl::Texture::create3D(GL_R11F_G11F_B10F, res);
+    v.emission = gl::Texture {};
+    ensureEmission(frame);
     // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
     v.radiance = gl::Texture::create3D(
         GL_RGBA16F, res, FrameRules::bounceVolumeUsed(frame) ? 1 : v.frame.levelCount());
     v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
+}
+
+void VoxelizePass::ensureEmission(FrameContext& frame)
+{
+    // Only scenes with emissive materials keep an emission volume. Made when a material starts to emit, it
+    // holds no light yet anywhere, which is right: nothing emitted before, and the voxels of the material's
+    // meshes are redone now.
+    VoxelVolume& v = frame.voxels;
+    const bool needed = frame.scene.scene().hasEmissiveMaterial();
+    if (needed && !v.emission) {
+        v.emission = gl::Texture::create3D(GL_R11F_G11F_B10F, v.frame.resolution);
+        v.emission.setFilter(GL_NEAREST, GL_NEAREST);
+        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        glClearTexImage(v.emission.id(), 0, GL_RGB, GL_FLOAT, zero);
+    } else if (!needed && v.emission) {
+        v.emission = gl::Texture {};
+    }
 }
 
 void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)
@@ -63,8 +83,9 @@ void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)
     const glm::ivec3 lo = region.lo, size = region.size();
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
-        glClearTexSubImage(t->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
-            t == &v.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
+        if (*t)
+            glClearTexSubImage(t->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
+                t == &v.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
@@ -84,9 +105,10 @@ void VoxelizePass::accumulate(
     if (nvConservative)
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
     // The three material textures are written as 32-bit words (common/VoxelWords.glsl).
-    int unit = 0;
-    for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
-        t->bindImage(GLuint(unit++), 0, GL_READ_WRITE, GL_R32UI);
+    v.albedo.bindImage(0, 0, GL_READ_WRITE, GL_R32UI);
+    v.normal.bindImage(1, 0, GL_READ_WRITE, GL_R32UI);
+    if (v.emission)
+        v.emission.bindImage(2, 0, GL_READ_WRITE, GL_R32UI);
     // Clusters of triangles that cannot reach the region are not drawn; conservative enlargement and the
     // depth spread reach one voxel beyond a triangle.
     const float voxel = v.frame.voxelSize();
@@ -99,6 +121,7 @@ void VoxelizePass::accumulate(
         program.set("uGridOrigin", v.frame.origin);
         program.set("uGridExtent", v.frame.extent);
         program.set("uResolution", res);
+        program.set("uEmissionVolume", v.emission ? 1 : 0);
         program.set("uRegionLo", region.lo);
         program.set("uRegionHi", region.hi);
         program.set("uGroupSize", OccupiedCellList::kGroupSize);

@@ -26,6 +26,8 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
+    /** An emission volume exactly when the scene has emissive materials. */
+    static void ensureEmission(FrameContext& frame);
     /** Empties the region's albedo, normal and emission, which the voxelizer then averages into. */
     void clear(FrameContext& frame, const VoxelRegion& region);
     /** Averages the fragments of one layer's meshes into the region, listing each voxel reached first into

@@ -39,7 +39,7 @@ vec3 ownCell(ivec3 voxel, vec3 n, bool faced)
     if (cellNormal.w <= 0.0)
         return vec3(0.0);
     vec4 front = texelFetch(uIrradiance, cell, 0);
-    if (cellNormal.w < 1.5)
+    if (cellNormal.w < 0.75) // one-sided (common/IrradianceLookup.glsl)
         return max(front.rgb, vec3(0.0));
     vec4 back = texelFetch(uIrradianceBack, cell, 0);
     if (!faced)

@@ -2,7 +2,8 @@
 // along its own normal, interpolated for a pixel.
 // Needs uGridOrigin (metres) declared before it.
 layout(binding = 12) uniform sampler3D uIrradiance;
-layout(binding = 13) uniform sampler3D uCellNormal; // w: 0 none, 1 one-sided, 2 two-sided
+// rgba8 snorm: xyz the cell normal, w = 0 no surface, 0.5 one-sided, 1 two-sided (half the sides, to fit snorm).
+layout(binding = 13) uniform sampler3D uCellNormal;
 layout(binding = 14) uniform sampler3D uIrradianceBack;
 uniform int uCells;         // cache cells per side
 uniform float uCellSize;    // metres
@@ -28,7 +29,7 @@ bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
         if (cellNormal.w <= 0.0)
             continue;
         float agreement = dot(cellNormal.xyz, n);
-        bool back = cellNormal.w > 1.5 && agreement < 0.0;
+        bool back = cellNormal.w > 0.75 && agreement < 0.0;
         agreement = abs(agreement);
         if (agreement < 0.5)
             continue;

@@ -21,7 +21,7 @@ layout(binding = 1) uniform sampler3D uNormal;
 layout(rgba16f, binding = 0) writeonly uniform image3D uIrradiance;     // along the cell normal
 layout(rgba16f, binding = 1) writeonly uniform image3D uIrradianceBack; // against it, two-sided cells only
 // xyz: the cell's unit normal; w: 0 = no surface, 1 = one-sided, 2 = two-sided (uIrradianceBack is valid)
-layout(rgba16f, binding = 2) writeonly uniform image3D uCellNormal;
+layout(rgba8_snorm, binding = 2) writeonly uniform image3D uCellNormal; // w = sides / 2 (common/IrradianceLookup.glsl)
 
 uniform int uResolution; // voxels per side
 uniform int uCellSize;   // voxels per cell side
@@ -85,7 +85,7 @@ void main()
             }
         }
     }
-    imageStore(uCellNormal, cell, vec4(n, twoSided ? 2.0 : 1.0));
+    imageStore(uCellNormal, cell, vec4(n, twoSided ? 1.0 : 0.5));
     imageStore(uIrradianceBack, cell, kNone);
     // The gather appears once, in a loop over the sides: llvmpipe runs all code of a shader in every lane, so
     // three gathers written out (one side, or two) cost every cell the first steps of fifteen cones, and the

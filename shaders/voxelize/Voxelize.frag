@@ -23,6 +23,7 @@ layout(binding = 0) uniform sampler2D uAlbedoTexture;
 layout(r32ui, binding = 0) uniform coherent uimage3D uAlbedoWords;
 layout(r32ui, binding = 1) uniform coherent uimage3D uNormalWords;
 layout(r32ui, binding = 2) uniform coherent uimage3D uEmissionWords;
+uniform bool uEmissionVolume; // the scene has emissive materials (passes/VoxelizePass::ensureEmission)
 uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept
 uniform ivec3 uRegionHi;
 
@@ -111,6 +112,7 @@ void main()
         if (before == 0)
             appendCell(voxel);
         addNormal(voxel, normal);
-        addEmission(voxel, emission, before);
+        if (uEmissionVolume)
+            addEmission(voxel, emission, before);
     }
 }

@@ -401,8 +401,8 @@ void RenderPlanTest::irradianceCacheFollowsTheLight()
         planned();
         expectAction("irradiance cache", "run");
         expectAction("inject light", "reused");
-        QCOMPARE(
-            std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes({ .areaLights = false }));
+        QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
+            settings.voxelMemoryBytes({ .emission = false, .areaLights = false }));
         const double difference = io::ImageMetrics::relativeMse(m_plannedImage, perPixel);
         qInfo("irradiance cache, %d^3-voxel cells: relative MSE %.2e against per-pixel cones", cell,
             difference);

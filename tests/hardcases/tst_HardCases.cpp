@@ -476,10 +476,11 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
                 settings.irradianceCellSize = resolution == 8 ? 4 : 2;
                 render(room(), settings, 16);
                 QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
-                    settings.voxelMemoryBytes({ .areaLights = false }));
+                    settings.voxelMemoryBytes({ .emission = false, .areaLights = false }));
             }
-    // What a scene adds: an opacity chain for an area light's shadows, and nothing once it is gone; a moving
-    // object adds nothing (its updates redraw the static triangles near it instead of keeping a copy).
+    // What a scene adds: an opacity chain for an area light's shadows, an emission volume for emissive
+    // materials, and nothing once they are gone; a moving object adds nothing (its updates redraw the static
+    // triangles near it instead of keeping a copy).
     render::Scene scene = room();
     scene.meshes[1].dynamic = true;
     render::SurfaceLight rect;
@@ -488,9 +489,13 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
     render::RenderSettings settings;
     settings.voxelResolution = 32;
     render(scene, settings, 16);
+    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes({ .emission = false }));
+    scene.materials[1].emission = glm::vec3(1.0f); // an emissive material adds the emission volume
+    render(scene, settings, 16);
     QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes());
     render(room(), settings, 16);
-    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()), settings.voxelMemoryBytes({ .areaLights = false }));
+    QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
+        settings.voxelMemoryBytes({ .emission = false, .areaLights = false }));
 }
 
 void HardCasesTest::whiteFurnace()
