@@ -33,7 +33,9 @@ struct VoxelVolume {
     gl::Texture normal; ///< rgba8 snorm: averaged unit normal (shorter where normals cancel).
     gl::Texture
         emission; ///< r11f_g11f_b10f: averaged emitted radiance; only for scenes with emissive materials.
-    gl::Texture radiance; ///< rgba16f, full mip chain: premultiplied outgoing radiance, a = opacity.
+    /// rgba16f: premultiplied outgoing radiance, a = opacity; level 0 only where cones do not read its box
+    /// levels (anisotropic mips, or the bounced volume in use), else the full mip chain.
+    gl::Texture radiance;
     /// rgba8, full mip chain: 1 where a voxel is occupied; above, per axis (rgb), the opacity a ray along
     /// that axis meets crossing the texel (inject/DownsampleOpacity.comp). The area lights' shadow cones
     /// trace it (common/AreaLights.glsl); built by light injection when there are area lights.
@@ -43,8 +45,8 @@ struct VoxelVolume {
     /// level k+1), as six tiles of one gl::Texture::create3DStack in that order (kDirectionalTiles).
     gl::Texture directional;
     /// With bounces != 1 (VoxelBouncePass): the radiance after the bounce iteration, L = L_direct + albedo *
-    /// (what the cells gathered from the previous iterate), full mip chain, and its directional chains when
-    /// anisotropic. Empty otherwise. Cones sample these when present.
+    /// (what the cells gathered from the previous iterate), and its directional chains when anisotropic (then
+    /// level 0 only), else its full box mip chain. Empty otherwise. Cones sample these when present.
     gl::Texture bounced;
     gl::Texture bouncedDirectional;
     /// The bounce iteration's gather, one texel per cell of RenderSettings::bounceCellSize^3 voxels, laid out
@@ -74,14 +76,13 @@ struct VoxelVolume {
     Aabb previousDynamicBounds;
     std::uint64_t radianceVersion = 0; ///< Grows each time level 0 of radiance is rewritten.
     std::uint64_t bouncedVersion = 0; ///< Grows each time the bounce iteration rewrites `bounced`.
-    /// The bouncedVersion levels 1..N of `bounced` were box-filtered for, when its cones read directional
-    /// chains (as boxMipsVersion is for `radiance`).
-    std::uint64_t bouncedBoxMipsVersion = 0;
     BounceProgress bounceProgress;
-    /// The radianceVersion levels 1..N of `radiance` were filtered for. With anisotropic mips cones read only
-    /// level 0 and the directional chains, so the box levels are filtered only when something looks at them
-    /// (the voxel inspector, readVoxels, the NaN check: Renderer::ensureBoxMips).
-    std::uint64_t boxMipsVersion = 0;
+    /// With anisotropic mips cones read level 0 of their volume and the directional chains only, so the
+    /// volume has no box-filtered levels of its own. The voxel inspector, readVoxels and the NaN check look
+    /// at them here: the cone volume's level 0 and its box levels, made when first looked at (Renderer's
+    /// ensureInspectionMips) for the version in inspectionMipsKey.
+    gl::Texture inspectionMips;
+    std::uint64_t inspectionMipsKey = 0;
     /// The occupied voxels as the voxelizer listed them while drawing: every static voxel as of the last full
     /// static rebuild (a material edit moves no geometry, so the list stays whole) and every dynamic voxel as
     /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
@@ -100,6 +101,12 @@ struct VoxelVolume {
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance.
      */
     const gl::Texture& coneRadiance() const { return bounced ? bounced : radiance; }
+    /** Which light coneRadiance() holds: the bounced volume's version, or the first-bounce one's (top bit
+     * clear). */
+    std::uint64_t coneRadianceKey() const
+    {
+        return bounced ? (bouncedVersion | (std::uint64_t(1) << 63)) : radianceVersion;
+    }
     const gl::Texture& coneDirectional() const { return bounced ? bouncedDirectional : directional; }
 };
 

@@ -57,6 +57,21 @@ struct FrameRules {
     {
         return frame.settings.bounces != 1 && hasLightSources(frame);
     }
+    /**
+     * Mip levels of the volume cones trace. With anisotropic mips cones read its level 0 and the directional
+     * chains only (common/ConeTracing.glsl), so the box levels are not kept (the inspector makes its own:
+     * VoxelVolume::inspectionMips).
+     */
+    static int coneVolumeLevels(const FrameContext& frame)
+    {
+        return frame.settings.anisotropicMips ? 1 : frame.voxels.frame.levelCount();
+    }
+    /** Mip levels of the first-bounce radiance: level 0 alone when it is only the bounce iteration's source.
+     */
+    static int radianceLevels(const FrameContext& frame)
+    {
+        return bounceVolumeUsed(frame) ? 1 : coneVolumeLevels(frame);
+    }
     /** Ambient occlusion is only ever shown by its debug view; it is not part of the physical image. */
     static bool ambientOcclusionNeeded(const FrameContext& frame)
     {

@@ -271,13 +271,14 @@ std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
     std::uint64_t bytes = (scene.emission ? 3 : 2) * chain(n, 4, false);
     if (scene.areaLights)
         bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
-    // The volume cones trace, rgba16f with its levels, and with anisotropic mips six directional chains from
-    // level 1 and the five gaps between them: the bounced volume when bounces are carried by the voxels (the
-    // first-bounce radiance then keeps level 0 only), else the first-bounce radiance itself.
+    // The volume cones trace, rgba16f: with anisotropic mips level 0 and six directional chains from level 1
+    // with the five gaps between them, else its box mip chain. It is the bounced volume when bounces are
+    // carried by the voxels (the first-bounce radiance then keeps level 0 only as its source), else the
+    // first-bounce radiance itself. (Box levels made for the inspector are not counted: made on demand.)
     const bool bounced = bounces != 1 && scene.lightSources;
-    bytes += chain(n, 8, !bounced);
+    bytes += chain(n, 8, !bounced && !anisotropicMips);
     if (bounced)
-        bytes += chain(n, 8, true);
+        bytes += chain(n, 8, !anisotropicMips);
     if (anisotropicMips && n >= 2)
         bytes += 11 * chain(n / 2, 8, true);
     // Cells of the bounce gather and of the irradiance cache: front and back rgba16f, normal rgba8 snorm; the

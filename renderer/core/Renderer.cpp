@@ -46,7 +46,8 @@ struct Renderer::State {
     FiniteCheck finiteCheck;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
-    VoxelMipBuilder boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureBoxMips)
+    VoxelMipBuilder
+        boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureInspectionMips)
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
     std::uint64_t coneSamples = 0; ///< counted in the last frame
     int bounceIterationsPerFrame = 0;
@@ -54,24 +55,31 @@ struct Renderer::State {
 
 namespace {
 
-// Levels 1..N of the isotropic radiance volumes (first-bounce and bounced), which cones do not read when the
-// mips are anisotropic: filtered only when something looks at them.
-void ensureBoxMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
+// The box-filtered levels of the volume cones trace, for the voxel inspector, readVoxels and the NaN check.
+// With anisotropic mips the volume has level 0 only (cones read the directional chains above it), so they are
+// made in VoxelVolume::inspectionMips when something looks, and kept while the light stays the same.
+void ensureInspectionMips(
+    const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
 {
-    const bool radianceStale = v.radiance && v.radiance.levels() > 1 && v.boxMipsVersion != v.radianceVersion;
-    const bool bouncedStale
-        = v.bounced && v.bouncedDirectional && v.bouncedBoxMipsVersion != v.bouncedVersion;
-    if (!radianceStale && !bouncedStale)
+    const gl::Texture& source = v.coneRadiance();
+    const int levels = v.frame.levelCount();
+    if (!source || source.levels() == levels) {
+        v.inspectionMips = gl::Texture();
         return;
-    builder.listCells(shaders, v.frame.resolution, v.frame.levelCount(), v.occupiedVoxels(dynamicMeshes));
-    if (radianceStale) {
-        builder.buildBox(shaders, v.radiance);
-        v.boxMipsVersion = v.radianceVersion;
     }
-    if (bouncedStale) {
-        builder.buildBox(shaders, v.bounced);
-        v.bouncedBoxMipsVersion = v.bouncedVersion;
-    }
+    const std::uint64_t key = v.coneRadianceKey();
+    if (v.inspectionMips && v.inspectionMips.width() == source.width() && v.inspectionMipsKey == key)
+        return;
+    if (!v.inspectionMips || v.inspectionMips.width() != source.width())
+        v.inspectionMips = gl::Texture::create3D(GL_RGBA16F, source.width(), levels);
+    const int side = source.width();
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glCopyImageSubData(source.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.inspectionMips.id(), GL_TEXTURE_3D, 0, 0, 0,
+        0, side, side, side);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    builder.listCells(shaders, v.frame.resolution, levels, v.occupiedVoxels(dynamicMeshes));
+    builder.buildBox(shaders, v.inspectionMips);
+    v.inspectionMipsKey = key;
 }
 
 std::unique_ptr<Pipeline> makePipeline()
@@ -354,6 +362,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     FrameStats stats = st.pipeline->execute(frame);
     st.coneSamples = st.coneSampleCounter ? st.coneSampleCounter->read() : 0;
     st.staticMaterialEdits = Aabb {};
+    // Box levels made for inspecting light that has since changed are remade when next looked at.
+    if (st.voxels.inspectionMips
+        && (st.voxels.inspectionMipsKey != st.voxels.coneRadianceKey()
+            || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
+        st.voxels.inspectionMips = gl::Texture();
     stats.voxelBytes = st.voxels.byteSize();
     stats.width = width;
     stats.height = height;
@@ -388,7 +401,8 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
 
 const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
+    ensureInspectionMips(
+        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
 }
 
@@ -432,7 +446,8 @@ void Renderer::setBounceIterationsPerFrame(int iterations)
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
+    ensureInspectionMips(
+        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     return m_state->finiteCheck.run(*m_state->shaders, m_state->screen, m_state->voxels);
 }
 
@@ -461,7 +476,8 @@ RadianceImage Renderer::readFrame() const
 
 std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
 {
-    ensureBoxMips(*m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
+    ensureInspectionMips(
+        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
     const VoxelVolume& v = m_state->voxels;
     static const char* const kDirectional[6]
         = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
@@ -491,6 +507,9 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
     if (!texture || !*texture)
         throw std::invalid_argument(
             "no voxel channel '" + channel + "' (albedo, normal, emission, radiance, bounced)");
+    // The cone volume's box levels, where it keeps none of its own.
+    if (level > 0 && texture == &v.coneRadiance() && v.inspectionMips)
+        texture = &v.inspectionMips;
     return readTextureLevel(*texture, level, size);
 }
 

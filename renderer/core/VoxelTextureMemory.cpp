@@ -71,7 +71,8 @@ std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
         { "bounce cell normals", &v.bounceCellNormal }, { "irradiance cache", &v.irradiance },
         { "irradiance cache, back faces", &v.irradianceBack },
         { "irradiance cell normals", &v.irradianceNormal },
-        { "irradiance cells gathered", &v.irradianceRequested } };
+        { "irradiance cells gathered", &v.irradianceRequested },
+        { "box levels for inspection", &v.inspectionMips } };
     for (const auto& [name, texture] : named)
         if (*texture)
             list.push_back(describe(name, *texture));

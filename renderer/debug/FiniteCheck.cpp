@@ -61,6 +61,10 @@ std::vector<NonFiniteCount> FiniteCheck::run(
         for (int level = 0; level < voxels.bounced.levels(); ++level)
             counts.push_back(
                 { "bounced radiance level " + std::to_string(level), count(voxels.bounced, level) });
+    // The cone volume's box levels where it keeps none (made for this check by Renderer::countNonFinite).
+    for (int level = 1; level < voxels.inspectionMips.levels(); ++level)
+        counts.push_back(
+            { "cone radiance box level " + std::to_string(level), count(voxels.inspectionMips, level) });
     for (const auto& [prefix, stack] :
         { std::pair { "directional radiance (six tiles) level ", &voxels.directional },
             std::pair { "bounced directional radiance (six tiles) level ", &voxels.bouncedDirectional } })

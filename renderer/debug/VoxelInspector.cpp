@@ -18,8 +18,9 @@ const VoxelListing& VoxelInspector::list(
 {
     if (!volume.radiance)
         return m_listing = VoxelListing {};
-    // The light cones trace: the bounced volume when bounces are carried by the voxels.
-    const gl::Texture& radiance = volume.coneRadiance();
+    // The light cones trace: the bounced volume when bounces are carried by the voxels, with its box levels
+    // (made for the inspector when the volume keeps none: VoxelVolume::inspectionMips).
+    const gl::Texture& radiance = volume.inspectionMips ? volume.inspectionMips : volume.coneRadiance();
     level = std::clamp(level, 0, radiance.levels() - 1);
     const std::array<std::uint64_t, 6> key { std::uint64_t(level), std::uint64_t(channel),
         volume.materialsVersion, volume.radianceVersion, volume.bouncedVersion,

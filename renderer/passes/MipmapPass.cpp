@@ -40,19 +40,17 @@ void MipmapPass::execute(FrameContext& frame)
     m_levelZeroOnly = FrameRules::bounceVolumeUsed(frame);
     // With bounces in the voxels cones trace the bounced volume, which filters its own levels; the
     // first-bounce light is only its source, read at level 0, so its levels would be memory nobody reads.
-    setLevelCount(v.radiance, m_levelZeroOnly ? 1 : v.frame.levelCount());
+    setLevelCount(v.radiance, FrameRules::radianceLevels(frame));
     if (m_levelZeroOnly) {
         v.directional = gl::Texture();
-        v.boxMipsVersion = v.radianceVersion;
         return;
     }
-    m_builder.listCells(frame.shaders, v.frame.resolution, v.radiance.levels(),
+    m_builder.listCells(frame.shaders, v.frame.resolution, v.frame.levelCount(),
         v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
     } else {
         m_builder.buildBox(frame.shaders, v.radiance);
-        v.boxMipsVersion = v.radianceVersion;
         v.directional = gl::Texture();
     }
 }

@@ -55,11 +55,11 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame)
         v.bounced ? "first-bounce radiance or a bounce setting changed" : "no valid output yet" };
 }
 
-void VoxelBouncePass::allocate(VoxelVolume& v, int cells)
+void VoxelBouncePass::allocate(VoxelVolume& v, int cells, int levels)
 {
     const int res = v.frame.resolution;
-    if (!v.bounced || v.bounced.width() != res)
-        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, v.frame.levelCount());
+    if (!v.bounced || v.bounced.width() != res || v.bounced.levels() != levels)
+        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, levels);
     if (!v.bounceIrradiance || v.bounceIrradiance.width() != cells)
         for (gl::Texture* t : { &v.bounceIrradiance, &v.bounceIrradianceBack, &v.bounceCellNormal }) {
             // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
@@ -162,13 +162,15 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
+    const int levels = FrameRules::coneVolumeLevels(frame);
     const bool voxelsChanged = !v.bounced || v.materialsVersion != m_listedMaterials
-        || v.bounced.width() != res || !v.bounceIrradiance || v.bounceIrradiance.width() != cells;
-    allocate(v, cells);
+        || v.bounced.width() != res || v.bounced.levels() != levels || !v.bounceIrradiance
+        || v.bounceIrradiance.width() != cells;
+    allocate(v, cells, levels);
     if (voxelsChanged) {
         m_cells.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize);
         m_builder.listCells(
-            frame.shaders, res, v.bounced.levels(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
+            frame.shaders, res, v.frame.levelCount(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
         m_listedMaterials = v.materialsVersion;
     }
     // An interactive view starts a new solve from the last one where the voxels are the same, so that a light
@@ -218,8 +220,8 @@ void VoxelBouncePass::execute(FrameContext& frame)
             m_done = m_done || m_iterations >= limit;
         }
     }
-    // With anisotropic mips cones read the directional chains only; the box levels are filtered when
-    // something looks at them (Renderer's ensureBoxMips), as for the first-bounce volume.
+    // With anisotropic mips cones read level 0 and the directional chains only; the inspector filters box
+    // levels of its own (VoxelVolume::inspectionMips).
     if (!frame.settings.anisotropicMips)
         v.bouncedDirectional = gl::Texture();
     v.bounceProgress = { m_iterations, m_residual, m_done };

@@ -49,7 +49,7 @@ private:
     static SolveKey keyOf(const FrameContext& frame);
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
-    void allocate(VoxelVolume& v, int cells);
+    void allocate(VoxelVolume& v, int cells, int levels);
     /** Makes the first-bounce light the current iterate: level 0 copied, the levels cones read filtered. */
     void startFromFirstBounce(FrameContext& frame);
     void buildMips(FrameContext& frame);

@@ -64,12 +64,13 @@ void VoxelMipBuilder::buildDirectional(
         m_allDirectionsProgram = &shaders.program(
             { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
     }
-    const int levels = std::min(source.levels() - 1, int(m_levelCells.size()));
+    // The chains start at grid level 1, from the source's level 0 alone: a source without box levels will do.
+    const int levels = int(m_levelCells.size());
     if (levels < 1)
         return;
     const int size = std::max(1, resolution / 2);
-    if (!directional || directional.width() != size || directional.levels() != source.levels() - 1)
-        directional = gl::Texture::create3DStack(GL_RGBA16F, size, kDirectionalTiles, source.levels() - 1);
+    if (!directional || directional.width() != size || directional.levels() != levels)
+        directional = gl::Texture::create3DStack(GL_RGBA16F, size, kDirectionalTiles, levels);
     for (int level = 0; level < levels; ++level) {
         // The gaps between tiles are cleared too, as they must read empty.
         glClearTexImage(directional.id(), level, GL_RGBA, GL_FLOAT, nullptr);

@@ -52,8 +52,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     v.emission = gl::Texture {};
     ensureEmission(frame);
     // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
-    v.radiance = gl::Texture::create3D(
-        GL_RGBA16F, res, FrameRules::bounceVolumeUsed(frame) ? 1 : v.frame.levelCount());
+    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, FrameRules::radianceLevels(frame));
     v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
