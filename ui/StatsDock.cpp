@@ -67,6 +67,8 @@ StatsDock::StatsDock(QWidget* parent)
 
     m_total = makeValueLabel(QStringLiteral("totalGpuLabel"));
     m_memory = makeValueLabel(QStringLiteral("voxelMemoryLabel"));
+    m_memoryPerVoxel = makeValueLabel(QStringLiteral("voxelMemoryPerVoxelLabel"));
+    m_memoryPerVoxel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // never widens the dock
     m_grid = makeValueLabel(QStringLiteral("voxelGridLabel"));
     m_frame = makeValueLabel(QStringLiteral("frameSizeLabel"));
     m_bounces = makeValueLabel(QStringLiteral("bouncesLabel"));
@@ -80,6 +82,7 @@ StatsDock::StatsDock(QWidget* parent)
     form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("GPU total"), m_total);
     form->addRow(tr("Voxel memory"), m_memory);
+    form->addRow(QString(), m_memoryPerVoxel);
     form->addRow(tr("Voxel grid"), m_grid);
     form->addRow(tr("Frame"), m_frame);
     form->addRow(tr("Bounces"), m_bounces);
@@ -122,6 +125,10 @@ void StatsDock::showStats(const render::FrameStats& stats)
 
     m_total->setText(tr("%1 ms").arg(stats.totalGpuMs, 0, 'f', 3));
     m_memory->setText(tr("%1 MiB").arg(double(stats.voxelBytes) / (1024.0 * 1024.0), 0, 'f', 1));
+    m_memoryPerVoxel->setText(tr("%1 B per cell, %2 B per occupied voxel")
+                                  .arg(stats.voxelBytesPerCell(), 0, 'f', 1)
+                                  .arg(stats.voxelBytesPerOccupiedVoxel(), 0, 'f', 0));
+    m_memoryPerVoxel->setToolTip(tr("%1 of the grid's cells hold a surface").arg(stats.occupiedVoxels));
     if (stats.voxelResolution > 0)
         m_grid->setText(tr("%1, voxel %2 cm")
                             .arg(QString::number(stats.voxelResolution) + QStringLiteral("³"))

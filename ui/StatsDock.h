@@ -30,6 +30,7 @@ private:
     QTableWidget* m_table = nullptr;
     QLabel* m_total = nullptr;
     QLabel* m_memory = nullptr;
+    QLabel* m_memoryPerVoxel = nullptr;
     QLabel* m_grid = nullptr;
     QLabel* m_frame = nullptr;
     QLabel* m_bounces = nullptr;

@@ -136,6 +136,7 @@ PerfResult PerfBenchmark::measure(const PerfConfig& config)
     }
     result.cameraOnly = summarize(cameraOnly);
     result.memory = m_renderer.voxelMemory();
+    result.occupiedVoxels = cameraOnly.empty() ? 0 : cameraOnly.back().stats.occupiedVoxels;
 
     // Counted on its own frame, at the full frames' camera: the counting shader is slower and is not timed.
     m_renderer.setConeSampleCounting(true);

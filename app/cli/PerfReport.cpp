@@ -218,6 +218,21 @@ std::string PerfReport::efficiencyTable() const
     return out.str();
 }
 
+namespace {
+
+double bytesPerCell(const PerfResult& r)
+{
+    const double cells = double(r.config.grid) * double(r.config.grid) * double(r.config.grid);
+    return cells > 0.0 ? double(r.voxelBytes()) / cells : 0.0;
+}
+
+double bytesPerOccupiedVoxel(const PerfResult& r)
+{
+    return r.occupiedVoxels > 0 ? double(r.voxelBytes()) / double(r.occupiedVoxels) : 0.0;
+}
+
+} // namespace
+
 std::string PerfReport::memoryTables() const
 {
     std::ostringstream out;
@@ -229,8 +244,11 @@ std::string PerfReport::memoryTables() const
         std::size_t levels = 0;
         for (const render::VoxelTextureMemory& m : r.memory)
             levels = std::max(levels, m.levelBytes.size());
-        out << format("\n**%d³ grid**: %s bytes (%s MiB) in total.\n\n| texture | format | level 0 texels |",
-            r.config.grid, withSeparators(r.voxelBytes()).c_str(), mib(r.voxelBytes()).c_str());
+        out << format("\n**%d³ grid**: %s bytes (%s MiB) in total (GL reports %s), %.1f bytes per cell, %.0f "
+                      "per occupied voxel (%s of them).\n\n| texture | format | level 0 texels |",
+            r.config.grid, withSeparators(r.voxelBytes()).c_str(), mib(r.voxelBytes()).c_str(),
+            withSeparators(r.glVoxelBytes()).c_str(), bytesPerCell(r), bytesPerOccupiedVoxel(r),
+            withSeparators(r.occupiedVoxels).c_str());
         for (std::size_t l = 0; l < levels; ++l)
             out << " level " << l << " |";
         out << " total bytes |\n|---|---|---|";
@@ -294,8 +312,10 @@ std::string PerfReport::summary() const
     for (const PerfResult& r : m_results)
         if (std::find(done.begin(), done.end(), r.config.grid) == done.end()) {
             done.push_back(r.config.grid);
-            out << format("voxel memory at %d³: %s bytes (%s MiB)\n", r.config.grid,
-                withSeparators(r.voxelBytes()).c_str(), mib(r.voxelBytes()).c_str());
+            out << format(
+                "voxel memory at %d³: %s bytes (%s MiB), %.1f bytes per cell, %.0f per occupied voxel\n",
+                r.config.grid, withSeparators(r.voxelBytes()).c_str(), mib(r.voxelBytes()).c_str(),
+                bytesPerCell(r), bytesPerOccupiedVoxel(r));
         }
     return out.str();
 }

@@ -50,6 +50,7 @@ struct PerfResult {
     ModeTiming full; ///< every pass re-run (Renderer::invalidate() before each frame)
     ModeTiming cameraOnly; ///< only the camera moves: the render plan reuses voxels, injection and mips
     std::vector<render::VoxelTextureMemory> memory;
+    std::size_t occupiedVoxels = 0; ///< voxels holding a surface
     std::uint64_t coneSamples
         = 0; ///< 3D texture fetches of the cone pass in one frame (separate, untimed run)
     double coneMs = 0.0; ///< cone pass median GPU ms of the full frames
@@ -67,6 +68,14 @@ struct PerfResult {
         std::size_t total = 0;
         for (const render::VoxelTextureMemory& m : memory)
             total += m.totalBytes();
+        return total;
+    }
+    /** What GL reports for the same textures (VoxelTextureMemory::glBytes). */
+    std::size_t glVoxelBytes() const
+    {
+        std::size_t total = 0;
+        for (const render::VoxelTextureMemory& m : memory)
+            total += m.glBytes;
         return total;
     }
 };

@@ -379,8 +379,10 @@ int RenderCommand::run(int argc, char** argv)
                 qPrintable(p["action"].toString()), p["gpu_ms"].toDouble(),
                 qPrintable(p["reason"].toString()));
         }
-        std::printf("  total %.2f ms GPU, voxel memory %.1f MiB\n", json["total_gpu_ms"].toDouble(),
-            json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0));
+        std::printf(
+            "  total %.2f ms GPU, voxel memory %.1f MiB (%.1f bytes per cell, %.0f per occupied voxel)\n",
+            json["total_gpu_ms"].toDouble(), json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0),
+            json["voxel_bytes_per_cell"].toDouble(), json["voxel_bytes_per_occupied_voxel"].toDouble());
     }
     return nonFinite ? 4 : 0;
 }

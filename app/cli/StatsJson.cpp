@@ -21,6 +21,9 @@ QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const ren
     root["voxel_resolution"] = last.voxelResolution;
     root["voxel_size_m"] = double(last.voxelSize);
     root["voxel_memory_bytes"] = double(last.voxelBytes);
+    root["occupied_voxels"] = double(last.occupiedVoxels);
+    root["voxel_bytes_per_cell"] = last.voxelBytesPerCell();
+    root["voxel_bytes_per_occupied_voxel"] = last.voxelBytesPerOccupiedVoxel();
     root["bounce_iterations"] = last.bounceIterations;
     root["bounce_residual"] = last.bounceResidual;
     root["light_converged"] = last.lightConverged;

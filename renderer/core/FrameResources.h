@@ -97,6 +97,9 @@ struct VoxelVolume {
         return { &staticVoxels };
     }
 
+    /// Voxels holding a surface, counted from the voxelizer's lists after each voxelization (statistics).
+    std::size_t occupiedCount = 0;
+
     std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance.
      */

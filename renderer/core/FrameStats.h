@@ -16,9 +16,21 @@ struct PassStats {
 
 /** Per-frame figures for --stats, the benchmarks and the editor's stats panel. */
 struct FrameStats {
+    /** Voxel memory over the grid's cells (resolution^3), and over the cells holding a surface. */
+    double voxelBytesPerCell() const
+    {
+        const double cells = double(voxelResolution) * double(voxelResolution) * double(voxelResolution);
+        return cells > 0.0 ? double(voxelBytes) / cells : 0.0;
+    }
+    double voxelBytesPerOccupiedVoxel() const
+    {
+        return occupiedVoxels > 0 ? double(voxelBytes) / double(occupiedVoxels) : 0.0;
+    }
+
     std::vector<PassStats> passes;
     double totalGpuMs = 0.0;
     std::size_t voxelBytes = 0;
+    std::size_t occupiedVoxels = 0; ///< voxels holding a surface
     int width = 0, height = 0;
     int voxelResolution = 0;
     float voxelSize = 0.0f; ///< metres

@@ -65,4 +65,14 @@ void OccupiedCellList::dispatchOverCells() const
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
+std::size_t OccupiedCellList::count() const
+{
+    if (!m_dispatch)
+        return 0;
+    std::uint32_t command[4] = { 0, 0, 0, 0 };
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(m_dispatch.id(), 0, sizeof command, command);
+    return command[3];
+}
+
 } // namespace vct::render

@@ -45,6 +45,8 @@ public:
     /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells.
      */
     void dispatchOverCells() const;
+    /** How many cells are listed: a readback that waits for the listing, for statistics only. */
+    std::size_t count() const;
 
 private:
     const gl::Program* m_program = nullptr;

@@ -368,6 +368,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
             || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
         st.voxels.inspectionMips = gl::Texture();
     stats.voxelBytes = st.voxels.byteSize();
+    stats.occupiedVoxels = st.voxels.occupiedCount;
     stats.width = width;
     stats.height = height;
     stats.voxelResolution = st.voxels.frame.resolution;

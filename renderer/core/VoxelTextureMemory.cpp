@@ -37,6 +37,26 @@ std::string formatName(GLenum format)
     }
 }
 
+std::size_t glReportedBytes(const gl::Texture& texture)
+{
+    std::size_t total = 0;
+    for (int level = 0; level < texture.levels(); ++level) {
+        GLint width = 0, height = 0, depth = 0, bits = 0;
+        glGetTextureLevelParameteriv(texture.id(), level, GL_TEXTURE_WIDTH, &width);
+        glGetTextureLevelParameteriv(texture.id(), level, GL_TEXTURE_HEIGHT, &height);
+        glGetTextureLevelParameteriv(texture.id(), level, GL_TEXTURE_DEPTH, &depth);
+        for (const GLenum component :
+            { GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE,
+                GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_STENCIL_SIZE, GL_TEXTURE_SHARED_SIZE }) {
+            GLint size = 0;
+            glGetTextureLevelParameteriv(texture.id(), level, component, &size);
+            bits += size;
+        }
+        total += std::size_t(width) * std::size_t(height) * std::size_t(depth) * std::size_t(bits) / 8;
+    }
+    return total;
+}
+
 VoxelTextureMemory describe(const std::string& name, const gl::Texture& texture)
 {
     VoxelTextureMemory memory { name, formatName(texture.format()), texture.width(), texture.height(),
@@ -50,6 +70,7 @@ VoxelTextureMemory describe(const std::string& name, const gl::Texture& texture)
         h = std::max(1, h / 2);
         d = std::max(1, d / 2);
     }
+    memory.glBytes = glReportedBytes(texture);
     return memory;
 }
 

@@ -15,6 +15,9 @@ struct VoxelTextureMemory {
     std::string format; ///< "rgba16f", "rgba8", "r32f"
     int width = 0, height = 0, depth = 0; ///< texels of level 0
     std::vector<std::size_t> levelBytes; ///< one entry per mip level, level 0 first
+    /// The same storage from GL's own description of each level (its size and the bits of each component,
+    /// glGetTextureLevelParameter), as a check on levelBytes: a driver may pad, but must not store less.
+    std::size_t glBytes = 0;
 
     std::size_t totalBytes() const;
 };

@@ -119,9 +119,14 @@ void DynamicObjectTest::objectOnTheFloorSharesItsVoxels()
     m_gl.renderer->renderFrame(camera, 16, 16);
     const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(6.0f, 0.0f, 0.0f));
     m_gl.renderer->setMeshTransform(1, moved);
-    m_gl.renderer->renderFrame(camera, 16, 16);
+    const render::FrameStats afterMove = m_gl.renderer->renderFrame(camera, 16, 16);
     int size = 0;
     const std::vector<float> incremental = m_gl.renderer->readVoxels("albedo", 0, size);
+    // The stats count each voxel holding a surface once, shared ones too.
+    std::size_t occupied = 0;
+    for (std::size_t i = 3; i < incremental.size(); i += 4)
+        occupied += incremental[i] > 0.0f ? 1 : 0;
+    QCOMPARE(afterMove.occupiedVoxels, occupied);
 
     onFloor.meshes[1].transform = moved;
     m_gl.renderer->setScene(onFloor);

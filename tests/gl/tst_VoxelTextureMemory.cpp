@@ -53,6 +53,12 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
     int directional = 0;
     for (const render::VoxelTextureMemory& m : memory) {
         total += m.totalBytes();
+        // GL's own description of the storage (sizes and component bits per level) agrees with the count.
+        QVERIFY2(m.glBytes == m.totalBytes(),
+            qPrintable(QString("%1: GL reports %2 bytes, counted %3")
+                           .arg(m.name.c_str())
+                           .arg(m.glBytes)
+                           .arg(m.totalBytes())));
         // With every bounce in the voxels (the default) cones trace the bounced volume: it has the levels,
         // and the first-bounce radiance keeps level 0 alone, as the iteration's source.
         QVERIFY2(
@@ -86,6 +92,14 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
     QCOMPARE(directional, anisotropic ? 1 : 0);
     QCOMPARE(total, renderer.voxelBytes());
     QCOMPARE(total, stats.voxelBytes);
+    // The occupied voxels the stats report are those holding a surface.
+    int size = 0;
+    const std::vector<float> albedo = renderer.readVoxels("albedo", 0, size);
+    std::size_t occupied = 0;
+    for (std::size_t i = 3; i < albedo.size(); i += 4)
+        occupied += albedo[i] > 0.0f ? 1 : 0;
+    QVERIFY(occupied > 0);
+    QCOMPARE(stats.occupiedVoxels, occupied);
     QVERIFY(renderer.takeGlErrors().empty());
 }
 
