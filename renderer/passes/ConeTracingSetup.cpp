@@ -1,5 +1,7 @@
 #include "passes/ConeTracingSetup.h"
 
+#include "passes/ConeTraceKey.h"
+
 #include "core/FrameContext.h"
 
 #include <glm/trigonometric.hpp>
@@ -35,6 +37,13 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     v.coneRadiance().bindUnit(5);
     if (anisotropic)
         v.coneDirectional().bindUnit(6);
+}
+
+ConeTraceKey ConeTraceKey::of(const FrameContext& frame)
+{
+    const RenderSettings& s = frame.settings;
+    return { s.anisotropicMips, s.diffuseConeCount, frame.voxels.frame.resolution, s.diffuseApertureDeg,
+        s.stepFactor, s.maxDistance, s.coneOffsetVoxels };
 }
 
 void ConeTracingSetup::applyCellGather(const gl::Program& program, const FrameContext& frame,

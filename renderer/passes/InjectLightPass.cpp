@@ -9,7 +9,7 @@
 
 namespace vct::render {
 
-std::array<std::uint64_t, 5> InjectLightPass::keyOf(const FrameContext& frame) const
+InjectLightPass::LightKey InjectLightPass::keyOf(const FrameContext& frame)
 {
     return { frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading,
         frame.shadows.version, frame.scene.areaLightsVersion() };
@@ -67,8 +67,8 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const auto key = keyOf(frame);
     // Lights, shading settings and shadow-map size all bump lightValues or shading: those need everything.
     // An emitter's edit changes the light everywhere its area light reaches, not only in its own voxels.
-    const bool sameLights
-        = m_key != decltype(m_key) {} && key[1] == m_key[1] && key[2] == m_key[2] && key[4] == m_key[4];
+    const bool sameLights = m_key != LightKey {} && key.lightValues == m_key.lightValues
+        && key.shading == m_key.shading && key.areaLights == m_key.areaLights;
     if (!sameLights || !v.onlyDynamicChanged)
         return whole;
     if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed
@@ -85,7 +85,7 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
 {
     if (keyOf(frame) == m_key)
         return { PassDecision::Action::Reuse, "voxels, lights and shadows unchanged" };
-    std::string reason = m_key == decltype(m_key) {} ? "no valid output yet" : "voxels or lights changed";
+    std::string reason = m_key == LightKey {} ? "no valid output yet" : "voxels or lights changed";
     const VoxelRegion region = regionToInject(frame);
     if (region.size() != VoxelRegion::whole(frame.voxels.frame.resolution).size()) {
         const glm::ivec3 s = region.size();

@@ -30,7 +30,16 @@ public:
     void invalidate() override { m_key = {}; }
 
 private:
-    std::array<std::uint64_t, 5> keyOf(const FrameContext& frame) const;
+    /** The versions the injected light depends on; all zero before the first injection. */
+    struct LightKey {
+        std::uint64_t materials = 0; ///< VoxelVolume::materialsVersion
+        std::uint64_t lightValues = 0;
+        std::uint64_t shading = 0;
+        std::uint64_t shadowMaps = 0;
+        std::uint64_t areaLights = 0;
+        bool operator==(const LightKey& other) const = default;
+    };
+    static LightKey keyOf(const FrameContext& frame);
     /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object
      * moved). */
     VoxelRegion regionToInject(const FrameContext& frame) const;
@@ -39,7 +48,7 @@ private:
     const gl::Program* m_markOpacity = nullptr;
     const gl::Program* m_downsampleOpacity = nullptr;
     OccupiedCellList m_occupied;
-    std::array<std::uint64_t, 5> m_key {};
+    LightKey m_key;
 };
 
 } // namespace vct::render

@@ -12,12 +12,6 @@ namespace vct::render {
 
 namespace {
 
-std::array<std::uint64_t, 4> keyOf(const FrameContext& frame)
-{
-    return { frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lightPlacement,
-        std::uint64_t(frame.settings.shadowMapSize) };
-}
-
 bool anyShadowCaster(const Scene& scene)
 {
     for (const PointLight& l : scene.pointLights)
@@ -31,6 +25,12 @@ bool anyShadowCaster(const Scene& scene)
 
 } // namespace
 
+ShadowMapPass::MapsKey ShadowMapPass::keyOf(const FrameContext& frame)
+{
+    return { frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lightPlacement,
+        frame.settings.shadowMapSize };
+}
+
 PassDecision ShadowMapPass::plan(const FrameContext& frame)
 {
     if (!anyShadowCaster(frame.scene.scene()))
@@ -38,7 +38,7 @@ PassDecision ShadowMapPass::plan(const FrameContext& frame)
     if (keyOf(frame) == m_key)
         return { PassDecision::Action::Reuse, "lights and geometry unchanged" };
     return { PassDecision::Action::Run,
-        m_key == decltype(m_key) {} ? "no valid output yet" : "lights or geometry changed" };
+        m_key == MapsKey {} ? "no valid output yet" : "lights or geometry changed" };
 }
 
 void ShadowMapPass::ensureTextures(
@@ -174,8 +174,7 @@ void ShadowMapPass::execute(FrameContext& frame)
         drawMaps(frame, shadows.pointDepth, shadows.directionalDepth, MeshFilter::All, true);
     } else {
         // Static casters are drawn once into their own maps; a moving object costs a copy and its own draw.
-        const std::array<std::uint64_t, 3> staticKey { frame.versions.staticGeometry,
-            frame.versions.lightPlacement, std::uint64_t(size) };
+        const MapsKey staticKey { frame.versions.staticGeometry, 0, frame.versions.lightPlacement, size };
         if (staticKey != m_staticKey) {
             drawMaps(frame, m_staticPoint, m_staticDirectional, MeshFilter::Static, true);
             m_staticKey = staticKey;

@@ -26,6 +26,16 @@ public:
     }
 
 private:
+    /** What the maps depend on: the casters, the lights' placement and the map size; zero before the first
+     * draw. The static casters' own maps leave out the dynamic geometry. */
+    struct MapsKey {
+        std::uint64_t staticGeometry = 0;
+        std::uint64_t dynamicGeometry = 0;
+        std::uint64_t lightPlacement = 0;
+        int size = 0;
+        bool operator==(const MapsKey& other) const = default;
+    };
+    static MapsKey keyOf(const FrameContext& frame);
     void ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer);
     void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
         MeshFilter filter, bool clear);
@@ -33,8 +43,8 @@ private:
     const gl::Program* m_program = nullptr;
     gl::Texture m_staticPoint; ///< static casters only, when dynamic meshes exist
     gl::Texture m_staticDirectional;
-    std::array<std::uint64_t, 4> m_key {};
-    std::array<std::uint64_t, 3> m_staticKey {};
+    MapsKey m_key;
+    MapsKey m_staticKey; ///< dynamicGeometry left at zero
 };
 
 } // namespace vct::render

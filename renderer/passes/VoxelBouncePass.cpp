@@ -14,10 +14,8 @@ namespace vct::render {
 VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    return { s.anisotropicMips, s.bounces, s.diffuseConeCount,
-        std::min(s.bounceCellSize, frame.voxels.frame.resolution), frame.voxels.frame.resolution,
-        s.diffuseApertureDeg, s.stepFactor, s.maxDistance, s.coneOffsetVoxels, s.bounceTolerance,
-        frame.voxels.materialsVersion };
+    return { ConeTraceKey::of(frame), s.bounces, std::min(s.bounceCellSize, frame.voxels.frame.resolution),
+        s.bounceTolerance, frame.voxels.materialsVersion };
 }
 
 int VoxelBouncePass::iterationLimit(const FrameContext& frame)

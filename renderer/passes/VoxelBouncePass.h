@@ -4,6 +4,7 @@
 #include "core/RenderPass.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "passes/ConeTraceKey.h"
 #include "passes/VoxelMipBuilder.h"
 
 #include <cstdint>
@@ -40,9 +41,9 @@ public:
 private:
     /** Everything the iteration depends on besides the first-bounce radiance itself. */
     struct SolveKey {
-        bool anisotropic = false;
-        int bounces = 0, cones = 0, cellSize = 0, resolution = 0;
-        float aperture = 0.0f, step = 0.0f, maxDistance = 0.0f, coneOffset = 0.0f, tolerance = 0.0f;
+        ConeTraceKey cones;
+        int bounces = 0, cellSize = 0;
+        float tolerance = 0.0f;
         std::uint64_t materials = 0;
         bool operator==(const SolveKey& other) const = default;
     };

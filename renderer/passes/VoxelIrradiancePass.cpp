@@ -15,10 +15,8 @@ bool VoxelIrradiancePass::inUse(const FrameContext& frame)
 
 VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& frame)
 {
-    const RenderSettings& s = frame.settings;
-    return { s.anisotropicMips, s.bounces, s.diffuseConeCount, s.diffuseApertureDeg, s.stepFactor,
-        s.maxDistance, s.coneOffsetVoxels, frame.voxels.frame.resolution,
-        FrameRules::ambientOcclusionNeeded(frame), s.irradianceCellSize };
+    return { ConeTraceKey::of(frame), frame.settings.bounces, FrameRules::ambientOcclusionNeeded(frame),
+        frame.settings.irradianceCellSize };
 }
 
 VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& frame)

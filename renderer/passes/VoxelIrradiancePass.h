@@ -5,11 +5,11 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
+#include "passes/ConeTraceKey.h"
 
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
-#include <tuple>
 
 namespace vct::render {
 
@@ -45,7 +45,13 @@ public:
 
 private:
     /** Everything the gather depends on besides the radiance itself (bounces: which volume it traces). */
-    using GatherKey = std::tuple<bool, int, int, float, float, float, float, int, bool, int>;
+    struct GatherKey {
+        ConeTraceKey cones;
+        int bounces = 0; ///< which volume the cones trace (the bounced one, or the first-bounce light)
+        bool ambientOcclusion = false;
+        int cellSize = 0;
+        bool operator==(const GatherKey& other) const = default;
+    };
     static GatherKey keyOf(const FrameContext& frame);
     /** What decides which cells the traced pixels look up: the camera, the pixel grids and the geometry. */
     struct ViewKey {

@@ -1,0 +1,24 @@
+#pragma once
+
+namespace vct::render {
+
+struct FrameContext;
+
+/**
+ * Every setting ConeTracingSetup hands common/ConeTracing.glsl, so that a pass whose result comes from cones
+ * (the irradiance cache, the bounce iteration) keys its reuse on exactly what it traces with.
+ */
+struct ConeTraceKey {
+    bool anisotropic = false;
+    int cones = 0;
+    int resolution = 0;
+    float apertureDeg = 0.0f;
+    float step = 0.0f;
+    float maxDistance = 0.0f;
+    float coneOffset = 0.0f;
+
+    static ConeTraceKey of(const FrameContext& frame);
+    bool operator==(const ConeTraceKey& other) const = default;
+};
+
+} // namespace vct::render
