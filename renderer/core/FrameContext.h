@@ -18,7 +18,8 @@ class ConeSampleCounter;
 
 /**
  * Counters that grow when something a pass depends on changes. A pass remembers the values it last ran
- * with, so "can I reuse my output?" is an exact comparison rather than a guess.
+ * with, so "can I reuse my output?" is an exact comparison rather than a guess. Settings have no counter:
+ * each pass's key holds the settings it reads.
  */
 struct ChangeVersions {
     std::uint64_t staticGeometry = 1; ///< Static meshes, their materials, or the grid.
@@ -31,7 +32,6 @@ struct ChangeVersions {
     std::uint64_t dynamicVoxels() const { return dynamicGeometry + dynamicMaterials; }
     std::uint64_t lightPlacement = 1; ///< Light count, positions, directions, shadow flags: shadow maps.
     std::uint64_t lightValues = 1; ///< Anything about lights, intensities included: injection.
-    std::uint64_t shading = 1; ///< Settings that change injection (emission toggle).
 };
 
 /** Everything a pass may read or write during one frame. */

@@ -302,10 +302,4 @@ std::vector<std::vector<std::string>> RenderSettings::describe() const
     return rows;
 }
 
-bool RenderSettings::voxelsDifferFrom(const RenderSettings& other) const
-{
-    return voxelResolution != other.voxelResolution
-        || conservativeVoxelization != other.conservativeVoxelization;
-}
-
 } // namespace vct::render

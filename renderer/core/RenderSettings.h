@@ -111,8 +111,6 @@ struct RenderSettings {
     std::uint64_t voxelMemoryBytes(VoxelSceneNeeds scene = {}) const;
     /** (key, current value, meaning) for --help and --stats. */
     std::vector<std::vector<std::string>> describe() const;
-    /** True when a change from `other` needs the voxels rebuilt (grid or voxelization mode). */
-    bool voxelsDifferFrom(const RenderSettings& other) const;
 };
 
 const char* debugViewName(DebugView view);

@@ -236,17 +236,7 @@ void Renderer::setSettings(const RenderSettings& settings)
 {
     if (std::string problem = settings.validate(); !problem.empty())
         throw std::invalid_argument(problem);
-    if (settings.voxelsDifferFrom(m_settings)) {
-        ++m_state->versions.staticGeometry;
-        ++m_state->versions.dynamicGeometry;
-    }
-    if (settings.emission != m_settings.emission || settings.direct != m_settings.direct)
-        ++m_state->versions.shading;
-    if (settings.shadowMapSize != m_settings.shadowMapSize
-        || settings.viewCulling != m_settings.viewCulling) {
-        ++m_state->versions.lightPlacement;
-        ++m_state->versions.lightValues; // every shadow lookup changes: re-inject everything
-    }
+    // What a setting invalidates is decided by the passes: each one's reuse key holds the settings it reads.
     if (settings.diffuseConeCount != m_state->cones.size())
         m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
     m_settings = settings;

@@ -11,8 +11,9 @@ namespace vct::render {
 
 InjectLightPass::LightKey InjectLightPass::keyOf(const FrameContext& frame)
 {
-    return { frame.voxels.materialsVersion, frame.versions.lightValues, frame.versions.shading,
-        frame.shadows.version, frame.scene.areaLightsVersion() };
+    return { frame.voxels.materialsVersion, frame.versions.lightValues, frame.settings.direct,
+        frame.settings.emission, frame.settings.shadowMapSize, frame.shadows.version,
+        frame.scene.areaLightsVersion() };
 }
 
 namespace {
@@ -65,10 +66,11 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const VoxelVolume& v = frame.voxels;
     const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
     const auto key = keyOf(frame);
-    // Lights, shading settings and shadow-map size all bump lightValues or shading: those need everything.
+    // Lights, the direct and emission settings and the shadow maps' size need everything.
     // An emitter's edit changes the light everywhere its area light reaches, not only in its own voxels.
     const bool sameLights = m_key != LightKey {} && key.lightValues == m_key.lightValues
-        && key.shading == m_key.shading && key.areaLights == m_key.areaLights;
+        && key.direct == m_key.direct && key.emission == m_key.emission
+        && key.shadowMapSize == m_key.shadowMapSize && key.areaLights == m_key.areaLights;
     if (!sameLights || !v.onlyDynamicChanged)
         return whole;
     if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed

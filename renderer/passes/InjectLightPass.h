@@ -34,7 +34,9 @@ private:
     struct LightKey {
         std::uint64_t materials = 0; ///< VoxelVolume::materialsVersion
         std::uint64_t lightValues = 0;
-        std::uint64_t shading = 0;
+        bool direct = false; ///< the settings that change what is injected
+        bool emission = false;
+        int shadowMapSize = 0; ///< every shadow lookup changes with it
         std::uint64_t shadowMaps = 0;
         std::uint64_t areaLights = 0;
         bool operator==(const LightKey& other) const = default;

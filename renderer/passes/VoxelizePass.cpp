@@ -21,6 +21,8 @@ PassDecision VoxelizePass::plan(const FrameContext& frame)
         return { PassDecision::Action::Run, "no valid output yet" };
     if (m_staticGeometry != frame.versions.staticGeometry)
         return { PassDecision::Action::Run, "static geometry or grid changed" };
+    if (m_conservative != frame.settings.conservativeVoxelization)
+        return { PassDecision::Action::Run, "voxelization mode changed" };
     if (m_staticMaterials != frame.versions.staticMaterials)
         return { PassDecision::Action::Run,
             "a static material changed: re-voxelizing the objects that use it" };
@@ -155,7 +157,8 @@ void VoxelizePass::execute(FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
-    const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry;
+    const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry
+        || m_conservative != frame.settings.conservativeVoxelization;
     const bool dynamicMoved = hasDynamic && m_dynamicVersion != frame.versions.dynamicVoxels();
     // What to redo: the whole grid after a static change; else around the static meshes whose material
     // changed, and around the moving objects, now and before a move. The region is cleared and everything in
@@ -188,6 +191,7 @@ void VoxelizePass::execute(FrameContext& frame)
     }
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
+    m_conservative = frame.settings.conservativeVoxelization;
     // The static list names every static voxel, the dynamic one those only moving objects reach (static
     // meshes are drawn first, and a list takes a voxel from the first fragment to reach it): together, each
     // once.

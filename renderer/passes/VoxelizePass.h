@@ -46,6 +46,7 @@ private:
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;
     std::uint64_t m_dynamicVersion = 0;
+    bool m_conservative = false; ///< the voxelization mode of the last full rebuild
 };
 
 } // namespace vct::render

@@ -30,6 +30,7 @@ private slots:
     void editedMaterialRedoesOnlyLayersUsingIt();
     void glossyMaterialAddsSpecularCones();
     void voxelSettingsRebuildEverything();
+    void settingsInvalidateOnlyWhatReadsThem();
     void ambientOcclusionOnlyWhenShown();
     void noLightSourcesMeansNoIndirectLight();
     void secondBounceFollowsTheFirst();
@@ -261,6 +262,46 @@ void RenderPlanTest::voxelSettingsRebuildEverything()
     for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "run");
     expectSameAsForced("grid resolution");
+}
+
+// No table of settings decides what to redo: each pass keys on the settings it reads.
+void RenderPlanTest::settingsInvalidateOnlyWhatReadsThem()
+{
+    const render::RenderSettings original = m_gl.renderer->settings();
+    render::RenderSettings settings = original;
+    settings.conservativeVoxelization = !original.conservativeVoxelization;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("shadow maps", "reused");
+    expectAction("voxelize", "run");
+    expectSameAsForced("voxelization mode");
+    m_gl.renderer->setSettings(original);
+    planned();
+
+    settings = original;
+    settings.shadowMapSize = original.shadowMapSize * 2;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("shadow maps", "run");
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "run");
+    QVERIFY2(
+        pass("inject light").reason.find("only") == std::string::npos, pass("inject light").reason.c_str());
+    expectSameAsForced("shadow map size");
+    m_gl.renderer->setSettings(original);
+    planned();
+
+    settings = original;
+    settings.direct = !original.direct;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("shadow maps", "reused");
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "run");
+    expectSameAsForced("direct light off");
+
+    m_gl.renderer->setSettings(original);
+    planned();
 }
 
 void RenderPlanTest::ambientOcclusionOnlyWhenShown()
