@@ -2,6 +2,7 @@
 
 #include "core/ConeSet.h"
 #include "core/FrameResources.h"
+#include "core/FrameShape.h"
 #include "core/GpuScene.h"
 #include "core/RenderSettings.h"
 #include "core/ShaderLibrary.h"
@@ -57,6 +58,8 @@ struct FrameContext {
     ConeSampleCounter* coneSampleCounter = nullptr;
     /// At most this many bounce iterations a frame (Renderer::setBounceIterationsPerFrame); 0 = all of them.
     int bounceIterationsPerFrame = 0;
+    /// What the frame calls for, decided once before the passes plan (FrameShape::of).
+    FrameShape shape;
 };
 
 } // namespace vct::render

@@ -6,7 +6,8 @@ namespace vct::render {
 
 /**
  * What the scene and settings call for this frame. The plan skips a pass whose effect nobody needs, and the
- * shaders skip the work inside a pass the same way, so both agree by construction.
+ * shaders skip the work inside a pass the same way, so both agree by construction. Evaluated once per frame
+ * into FrameContext::shape (FrameShape::of), which the passes read.
  */
 struct FrameRules {
     /** Something emits light: an enabled light, or an emissive material with emission on. */

@@ -346,6 +346,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     frame.projection = matrices.projection;
     frame.pixelToRay = pixelToRay(camera, width, height);
     frame.bounceIterationsPerFrame = st.bounceIterationsPerFrame;
+    frame.shape = FrameShape::of(frame);
 
     if (st.coneSampleCounter)
         st.coneSampleCounter->reset();

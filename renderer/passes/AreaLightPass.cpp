@@ -1,7 +1,6 @@
 #include "passes/AreaLightPass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
 #include <string>
@@ -10,7 +9,7 @@ namespace vct::render {
 
 PassDecision AreaLightPass::plan(const FrameContext& frame)
 {
-    const int lights = FrameRules::areaLightCount(frame);
+    const int lights = frame.shape.areaLights;
     if (lights == 0)
         return { PassDecision::Action::Skip, "no area lights" };
     return { PassDecision::Action::Run,
@@ -20,7 +19,7 @@ PassDecision AreaLightPass::plan(const FrameContext& frame)
 
 void AreaLightPass::execute(FrameContext& frame)
 {
-    const int lights = FrameRules::areaLightCount(frame);
+    const int lights = frame.shape.areaLights;
     const gl::Program& program = frame.shaders.program(
         { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" },
             { "AREA_LIGHT_COUNT " + std::to_string(lights) } });

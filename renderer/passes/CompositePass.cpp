@@ -1,7 +1,6 @@
 #include "passes/CompositePass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 #include "core/PixelClass.h"
 
@@ -16,22 +15,22 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
     const Scene& scene = frame.scene.scene();
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
-    const int areas = FrameRules::areaLightCount(frame);
+    const int areas = frame.shape.areaLights;
     std::vector<std::string> defines { "POINT_LIGHT_COUNT " + std::to_string(points),
         "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
         "AREA_LIGHT_COUNT " + std::to_string(areas), "VIEW " + std::to_string(int(settings.view)) };
     if (settings.direct && points + directionals + areas > 0)
         defines.emplace_back("DIRECT");
     // The indirect targets hold this frame's light only when the cone pass ran for them.
-    if (settings.indirectDiffuse && FrameRules::diffuseConesNeeded(frame))
+    if (settings.indirectDiffuse && frame.shape.diffuseCones)
         defines.emplace_back("INDIRECT_DIFFUSE");
-    if (FrameRules::specularConesNeeded(frame))
+    if (frame.shape.specularCones)
         defines.emplace_back("INDIRECT_SPECULAR");
-    if (FrameRules::ambientOcclusionNeeded(frame))
+    if (frame.shape.ambientOcclusion)
         defines.emplace_back("AO_AVAILABLE");
     if ((pixelClass & PIXEL_GLOSSY) != 0)
         defines.emplace_back("GLOSSY");
-    if ((pixelClass & PIXEL_EMISSIVE) != 0 && FrameRules::emissionNeeded(frame))
+    if ((pixelClass & PIXEL_EMISSIVE) != 0 && frame.shape.emission)
         defines.emplace_back("EMISSION");
     if (frame.screen.indirectDivisor > 1)
         defines.emplace_back("UPSAMPLE");

@@ -1,7 +1,6 @@
 #include "passes/ConeTracePass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "core/PixelClass.h"
 #include "debug/ConeSampleCounter.h"
 #include "passes/ConeTracingSetup.h"
@@ -17,10 +16,10 @@ namespace vct::render {
 
 PassDecision ConeTracePass::plan(const FrameContext& frame)
 {
-    const bool diffuse = FrameRules::diffuseConesNeeded(frame);
-    const bool specular = FrameRules::specularConesNeeded(frame);
+    const bool diffuse = frame.shape.diffuseCones;
+    const bool specular = frame.shape.specularCones;
     if (!diffuse && !specular) {
-        if (!FrameRules::hasLightSources(frame))
+        if (!frame.shape.lightSources)
             return { PassDecision::Action::Skip, "no lights and no emission: no indirect light at all" };
         return { PassDecision::Action::Skip, "indirect diffuse off, no glossy material, AO not shown" };
     }
@@ -29,9 +28,9 @@ PassDecision ConeTracePass::plan(const FrameContext& frame)
     if (!specular)
         reason += frame.settings.indirectSpecular ? " (no glossy material: no specular cones)"
                                                   : " (specular off)";
-    if (diffuse && !FrameRules::ambientOcclusionNeeded(frame))
+    if (diffuse && !frame.shape.ambientOcclusion)
         reason += ", no AO";
-    if (diffuse && VoxelIrradiancePass::inUse(frame))
+    if (diffuse && frame.shape.irradianceCache)
         reason += ", diffuse looked up in the irradiance cache";
     return { PassDecision::Action::Run, reason };
 }
@@ -62,9 +61,9 @@ void ConeTracePass::execute(FrameContext& frame)
     const VoxelVolume& v = frame.voxels;
     const bool anisotropic = settings.anisotropicMips && v.coneDirectional();
     const bool counting = frame.coneSampleCounter != nullptr;
-    const bool cached = VoxelIrradiancePass::inUse(frame) && v.irradiance;
-    const bool diffuse = FrameRules::diffuseConesNeeded(frame);
-    const bool specular = FrameRules::specularConesNeeded(frame);
+    const bool cached = frame.shape.irradianceCache && v.irradiance;
+    const bool diffuse = frame.shape.diffuseCones;
+    const bool specular = frame.shape.specularCones;
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
@@ -124,7 +123,7 @@ void ConeTracePass::execute(FrameContext& frame)
         const gl::Program& cones = variant(
             frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
         s.indirectTarget.drawTo({ 0 });
-        cones.set("uAoEnabled", FrameRules::ambientOcclusionNeeded(frame) ? 1 : 0);
+        cones.set("uAoEnabled", frame.shape.ambientOcclusion ? 1 : 0);
         cones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
         traceClass(cones, s.indirectDivisor, PIXEL_NEEDS_CONES);
     }

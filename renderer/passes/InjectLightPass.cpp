@@ -1,7 +1,6 @@
 #include "passes/InjectLightPass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "core/LightUniforms.h"
 
 #include <algorithm>
@@ -78,7 +77,7 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
     const Scene& scene = frame.scene.scene();
     static const std::vector<AreaLight> none;
     const std::vector<AreaLight>& areaLights
-        = FrameRules::areaLightsUsed(frame) ? frame.scene.areaLights().lights : none;
+        = frame.shape.areaLights > 0 ? frame.scene.areaLights().lights : none;
     return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, areaLights, v.frame, 2))
         .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
 }
@@ -95,17 +94,17 @@ PassDecision InjectLightPass::plan(const FrameContext& frame)
             + std::to_string(s.z) + " voxels that changed"
             + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
-    if (FrameRules::areaLightsUsed(frame))
-        reason += "; " + std::to_string(FrameRules::areaLightCount(frame)) + " area lights";
+    if (frame.shape.areaLights > 0)
+        reason += "; " + std::to_string(frame.shape.areaLights) + " area lights";
     const AreaLightSet& areaLights = frame.scene.areaLights();
-    if (FrameRules::emittersAsAreaLights(frame) && areaLights.clusteredEmitters > 0)
+    if (frame.shape.emittersAsAreaLights && areaLights.clusteredEmitters > 0)
         reason += " (" + std::to_string(areaLights.clusteredEmitters) + " separate emitters merged into "
             + std::to_string(areaLights.emitterLightCount()) + ", each shadowed as one)";
     if (!frame.scene.areaLights().note.empty())
         reason += "; " + frame.scene.areaLights().note;
-    if (!FrameRules::emissionNeeded(frame))
+    if (!frame.shape.emission)
         reason += "; no emission to inject";
-    if (!FrameRules::hasLightSources(frame))
+    if (!frame.shape.lightSources)
         reason += "; no light sources: opacity only";
     return { PassDecision::Action::Run, reason };
 }
@@ -151,7 +150,7 @@ void InjectLightPass::execute(FrameContext& frame)
     const Scene& scene = frame.scene.scene();
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
-    const int areas = FrameRules::areaLightCount(frame);
+    const int areas = frame.shape.areaLights;
     const gl::Program& program = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" },
         { "POINT_LIGHT_COUNT " + std::to_string(points),
             "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
@@ -187,7 +186,7 @@ void InjectLightPass::execute(FrameContext& frame)
     applyLightUniforms(program, scene, frame.shadows);
     program.set("uGridOrigin", v.frame.origin);
     program.set("uVoxelSize", v.frame.voxelSize());
-    program.set("uEmissionEnabled", FrameRules::voxelEmissionNeeded(frame) ? 1 : 0);
+    program.set("uEmissionEnabled", frame.shape.voxelEmission ? 1 : 0);
     applyAreaLightUniforms(program, frame);
     program.set("uDirectEnabled", frame.settings.direct ? 1 : 0);
     v.albedo.bindUnit(0);

@@ -1,7 +1,6 @@
 #include "passes/MipmapPass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 
 namespace vct::render {
 
@@ -25,9 +24,9 @@ void setLevelCount(gl::Texture& texture, int levels)
 PassDecision MipmapPass::plan(const FrameContext& frame)
 {
     if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic
-        && FrameRules::bounceVolumeUsed(frame) == m_levelZeroOnly)
+        && frame.shape.bounceVolume == m_levelZeroOnly)
         return { PassDecision::Action::Reuse, "radiance unchanged" };
-    if (FrameRules::bounceVolumeUsed(frame))
+    if (frame.shape.bounceVolume)
         return { PassDecision::Action::Run, "level 0 only: cones trace the bounced volume's levels" };
     return { PassDecision::Action::Run, "radiance was re-injected" };
 }
@@ -37,10 +36,10 @@ void MipmapPass::execute(FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     m_radianceVersion = v.radianceVersion;
     m_anisotropic = frame.settings.anisotropicMips;
-    m_levelZeroOnly = FrameRules::bounceVolumeUsed(frame);
+    m_levelZeroOnly = frame.shape.bounceVolume;
     // With bounces in the voxels cones trace the bounced volume, which filters its own levels; the
     // first-bounce light is only its source, read at level 0, so its levels would be memory nobody reads.
-    setLevelCount(v.radiance, FrameRules::radianceLevels(frame));
+    setLevelCount(v.radiance, frame.shape.radianceLevels);
     if (m_levelZeroOnly) {
         v.directional = gl::Texture();
         return;

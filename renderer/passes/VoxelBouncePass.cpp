@@ -1,7 +1,6 @@
 #include "passes/VoxelBouncePass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "passes/ConeTracingSetup.h"
 
 #include <algorithm>
@@ -27,7 +26,7 @@ int VoxelBouncePass::iterationLimit(const FrameContext& frame)
 PassDecision VoxelBouncePass::plan(const FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (!FrameRules::bounceVolumeUsed(frame)) {
+    if (!frame.shape.bounceVolume) {
         // Cones must go back to the first-bounce volume; the memory is not needed either.
         for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance,
                  &v.bounceIrradianceBack, &v.bounceCellNormal })
@@ -160,7 +159,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
-    const int levels = FrameRules::coneVolumeLevels(frame);
+    const int levels = frame.shape.coneVolumeLevels;
     const bool voxelsChanged = !v.bounced || v.materialsVersion != m_listedMaterials
         || v.bounced.width() != res || v.bounced.levels() != levels || !v.bounceIrradiance
         || v.bounceIrradiance.width() != cells;

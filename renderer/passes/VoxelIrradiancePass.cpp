@@ -1,21 +1,15 @@
 #include "passes/VoxelIrradiancePass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "passes/ConeTracingSetup.h"
 
 #include <algorithm>
 
 namespace vct::render {
 
-bool VoxelIrradiancePass::inUse(const FrameContext& frame)
-{
-    return frame.settings.irradianceCache && FrameRules::diffuseConesNeeded(frame);
-}
-
 VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& frame)
 {
-    return { ConeTraceKey::of(frame), frame.settings.bounces, FrameRules::ambientOcclusionNeeded(frame),
+    return { ConeTraceKey::of(frame), frame.settings.bounces, frame.shape.ambientOcclusion,
         frame.settings.irradianceCellSize };
 }
 
@@ -28,7 +22,7 @@ VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& fra
 PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (!inUse(frame)) {
+    if (!frame.shape.irradianceCache) {
         v.irradiance = gl::Texture(); // the cone pass traces per pixel; the memory is not needed either
         v.irradianceBack = gl::Texture();
         v.irradianceNormal = gl::Texture();
@@ -148,8 +142,8 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
-    ConeTracingSetup::applyCellGather(program, frame, anisotropic, cellSize,
-        FrameRules::ambientOcclusionNeeded(frame), v.irradiance, v.irradianceBack, v.irradianceNormal);
+    ConeTracingSetup::applyCellGather(program, frame, anisotropic, cellSize, frame.shape.ambientOcclusion,
+        v.irradiance, v.irradianceBack, v.irradianceNormal);
     program.use();
     m_requested.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

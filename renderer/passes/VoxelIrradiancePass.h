@@ -40,9 +40,6 @@ public:
     void execute(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
 
-    /** Whether the cone pass should look diffuse light up in the cache this frame. */
-    static bool inUse(const FrameContext& frame);
-
 private:
     /** Everything the gather depends on besides the radiance itself (bounces: which volume it traces). */
     struct GatherKey {

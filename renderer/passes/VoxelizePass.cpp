@@ -1,7 +1,6 @@
 #include "passes/VoxelizePass.h"
 
 #include "core/FrameContext.h"
-#include "core/FrameRules.h"
 #include "core/Frustum.h"
 
 #include <utility>
@@ -54,7 +53,7 @@ void VoxelizePass::ensureResources(FrameContext& frame)
     v.emission = gl::Texture {};
     ensureEmission(frame);
     // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
-    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, FrameRules::radianceLevels(frame));
+    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, frame.shape.radianceLevels);
     v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
     m_framebuffer = gl::Framebuffer::createEmpty(res, res);
 }
