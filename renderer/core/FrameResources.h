@@ -100,6 +100,16 @@ struct VoxelVolume {
     /// Voxels holding a surface, counted from the voxelizer's lists after each voxelization (statistics).
     std::size_t occupiedCount = 0;
 
+    /** One row of textures(): a voxel texture and the name tools show it by. */
+    struct NamedTexture {
+        const char* name;
+        const gl::Texture* texture;
+    };
+    /**
+     * Every voxel texture, allocated or not, in one fixed order: the one list that memory accounting
+     * (describeVoxelMemory, byteSize), the NaN check and the benchmarks' tables loop over.
+     */
+    std::vector<NamedTexture> textures() const;
     std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance.
      */

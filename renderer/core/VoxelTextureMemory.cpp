@@ -84,19 +84,9 @@ std::size_t VoxelTextureMemory::totalBytes() const
 std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
 {
     std::vector<VoxelTextureMemory> list;
-    const std::pair<const char*, const gl::Texture*> named[] = { { "albedo", &v.albedo },
-        { "normal", &v.normal }, { "emission", &v.emission }, { "radiance", &v.radiance },
-        { "opacity", &v.opacity }, { "radiance, directional (+x -x +y -y +z -z)", &v.directional },
-        { "bounced", &v.bounced }, { "bounced, directional (+x -x +y -y +z -z)", &v.bouncedDirectional },
-        { "bounce cells", &v.bounceIrradiance }, { "bounce cells, back faces", &v.bounceIrradianceBack },
-        { "bounce cell normals", &v.bounceCellNormal }, { "irradiance cache", &v.irradiance },
-        { "irradiance cache, back faces", &v.irradianceBack },
-        { "irradiance cell normals", &v.irradianceNormal },
-        { "irradiance cells gathered", &v.irradianceRequested },
-        { "box levels for inspection", &v.inspectionMips } };
-    for (const auto& [name, texture] : named)
-        if (*texture)
-            list.push_back(describe(name, *texture));
+    for (const VoxelVolume::NamedTexture& named : v.textures())
+        if (*named.texture)
+            list.push_back(describe(named.name, *named.texture));
     return list;
 }
 

@@ -4,6 +4,17 @@
 
 namespace vct::render {
 
+namespace {
+
+/** Formats that can hold NaN or Inf: 8-bit, snorm and integer ones cannot. */
+bool holdsFloats(GLenum format)
+{
+    return format == GL_RGBA16F || format == GL_RGBA32F || format == GL_R32F || format == GL_RG32F
+        || format == GL_R11F_G11F_B10F;
+}
+
+} // namespace
+
 std::uint64_t FiniteCheck::count(const gl::Texture& texture, int level)
 {
     const bool volume = texture.target() == GL_TEXTURE_3D;
@@ -39,42 +50,22 @@ std::vector<NonFiniteCount> FiniteCheck::run(
         { "indirect diffuse", &screen.indirectDiffuse },
         { "indirect upsampling guide", &screen.indirectGuide }, { "specular", &screen.specular },
         { "area-light shadows", &screen.areaShadow }, { "area-light shadow guide", &screen.areaShadowGuide },
-        { "specular upsampling guide", &screen.specularGuide }, { "voxel normal", &voxels.normal },
-        { "voxel emission", &voxels.emission } };
+        { "specular upsampling guide", &screen.specularGuide } };
     for (const auto& [name, texture] : targets)
         if (*texture)
             counts.push_back({ name, count(*texture, 0) });
-    if (voxels.radiance)
-        for (int level = 0; level < voxels.radiance.levels(); ++level)
-            counts.push_back({ "radiance level " + std::to_string(level), count(voxels.radiance, level) });
-    const std::pair<const char*, const gl::Texture*> cells[]
-        = { { "voxel irradiance cache", &voxels.irradiance },
-              { "voxel irradiance cache, back faces", &voxels.irradianceBack },
-              { "voxel irradiance cell normals", &voxels.irradianceNormal },
-              { "bounce cells", &voxels.bounceIrradiance },
-              { "bounce cells, back faces", &voxels.bounceIrradianceBack },
-              { "bounce cell normals", &voxels.bounceCellNormal } };
-    for (const auto& [name, texture] : cells)
-        if (*texture)
-            counts.push_back({ name, count(*texture, 0) });
-    if (voxels.bounced)
-        for (int level = 0; level < voxels.bounced.levels(); ++level)
-            counts.push_back(
-                { "bounced radiance level " + std::to_string(level), count(voxels.bounced, level) });
-    // The cone volume's box levels where it keeps none (made for this check by Renderer::countNonFinite).
-    for (int level = 1; level < voxels.inspectionMips.levels(); ++level)
-        counts.push_back(
-            { "cone radiance box level " + std::to_string(level), count(voxels.inspectionMips, level) });
-    for (const auto& [prefix, stack] :
-        { std::pair { "directional radiance (six tiles) level ", &voxels.directional },
-            std::pair { "bounced directional radiance (six tiles) level ", &voxels.bouncedDirectional } })
-        if (*stack)
-            for (int level = 0; level < stack->levels(); ++level) {
-                // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
-                std::string name(prefix);
-                name.append(std::to_string(level + 1));
-                counts.push_back({ name, count(*stack, level) });
-            }
+    // Every level of every float voxel texture (the directional stacks' level k is grid level k + 1).
+    for (const VoxelVolume::NamedTexture& named : voxels.textures()) {
+        const gl::Texture& texture = *named.texture;
+        if (!texture || !holdsFloats(texture.format()))
+            continue;
+        for (int level = 0; level < texture.levels(); ++level) {
+            // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
+            std::string name("voxel ");
+            name.append(named.name).append(", level ").append(std::to_string(level));
+            counts.push_back({ name, count(texture, level) });
+        }
+    }
     return counts;
 }
 
