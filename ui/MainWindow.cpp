@@ -5,7 +5,6 @@
 #include "ExportSize.h"
 #include "LightDock.h"
 #include "MaterialDock.h"
-#include "ReferenceCompareDock.h"
 #include "RenderSettingsDock.h"
 #include "SceneGraphDock.h"
 #include "ShaderFolder.h"
@@ -15,6 +14,7 @@
 #include "UndoShortcutFilter.h"
 #include "ViewportWidget.h"
 #include "VoxelInspectorDock.h"
+#include "reference/ReferenceCompareDock.h"
 
 #include "document/BuiltinScenes.h"
 #include "document/Document.h"

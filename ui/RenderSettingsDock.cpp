@@ -2,7 +2,7 @@
 
 #include "document/Document.h"
 
-#include "core/RenderSettings.h"
+#include "scene/RenderSettings.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -4,7 +4,7 @@
 #include "NonFiniteOverlay.h"
 #include "ViewportOverlay.h"
 
-#include "core/Renderer.h"
+#include "Renderer.h"
 #include "document/Document.h"
 #include "scene/CameraBasis.h"
 #include "sync/NodePicker.h"

@@ -1,7 +1,7 @@
 #include "cli/AccuracyBenchmark.h"
 
+#include "Renderer.h"
 #include "cli/Statistics.h"
-#include "core/Renderer.h"
 #include "imageio/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
 

@@ -1,5 +1,6 @@
 #include "cli/AccuracyCommand.h"
 
+#include "Renderer.h"
 #include "cli/AccuracyBenchmark.h"
 #include "cli/AccuracyCsv.h"
 #include "cli/AccuracyReport.h"
@@ -7,7 +8,6 @@
 #include "cli/SceneInput.h"
 #include "cli/TerminalProgress.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
 #include "files/AtomicFile.h"

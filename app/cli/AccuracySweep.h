@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/RenderSettings.h"
+#include "scene/RenderSettings.h"
 
 #include <string>
 #include <utility>

@@ -1,12 +1,12 @@
 #include "cli/BenchCommand.h"
 
+#include "Renderer.h"
 #include "cli/AccuracyCommand.h"
 #include "cli/PerfCommand.h"
 #include "cli/PlanBenchmark.h"
 #include "cli/SceneInput.h"
 #include "cli/TargetsBenchmark.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 #include "files/AtomicFile.h"
 #include "imageio/ImageFile.h"
 

@@ -1,8 +1,8 @@
 #include "cli/PerfBenchmark.h"
 
+#include "Renderer.h"
 #include "cli/CameraOrbit.h"
 #include "cli/SceneSubdivider.h"
-#include "core/Renderer.h"
 
 #include <algorithm>
 #include <chrono>

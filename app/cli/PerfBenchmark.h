@@ -1,8 +1,8 @@
 #pragma once
 
 #include "cli/PerfResult.h"
-#include "core/RenderSettings.h"
 #include "debug/TrilinearRateProbe.h"
+#include "scene/RenderSettings.h"
 #include "scene/Scene.h"
 
 #include <map>

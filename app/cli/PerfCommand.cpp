@@ -1,10 +1,10 @@
 #include "cli/PerfCommand.h"
 
+#include "Renderer.h"
 #include "cli/PerfBenchmark.h"
 #include "cli/PerfReport.h"
 #include "cli/SceneInput.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 #include "files/AtomicFile.h"
 #include "plot/ChartWriter.h"
 

@@ -1,7 +1,7 @@
 #include "cli/PlanBenchmark.h"
 
+#include "Renderer.h"
 #include "cli/Statistics.h"
-#include "core/Renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

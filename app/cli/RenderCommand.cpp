@@ -2,11 +2,11 @@
 
 #include "cli/BlackImageCheck.h"
 
+#include "Renderer.h"
 #include "cli/SceneInput.h"
 #include "cli/StatsJson.h"
 #include "cli/TerminalProgress.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
 #include "document/ProjectFile.h"

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/RenderSettings.h"
 #include "document/SceneLoadInfo.h"
+#include "scene/RenderSettings.h"
 #include "scene/Scene.h"
 
 #include <QString>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/FrameStats.h"
-#include "core/RenderSettings.h"
+#include "scene/RenderSettings.h"
 
 #include <QJsonObject>
 #include <QString>

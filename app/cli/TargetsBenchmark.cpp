@@ -1,7 +1,7 @@
 #include "cli/TargetsBenchmark.h"
 
+#include "Renderer.h"
 #include "cli/CameraOrbit.h"
-#include "core/Renderer.h"
 #include "imageio/ImageMetrics.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "CameraFile.h"
 #include "LightsFile.h"
 #include "MeshBuilder.h"
-#include "ModelImporter.h"
+#include "import/ModelImporter.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>

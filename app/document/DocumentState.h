@@ -4,9 +4,9 @@
 #include "LightNode.h"
 #include "SceneNode.h"
 
-#include "core/RenderSettings.h"
 #include "scene/Camera.h"
 #include "scene/Material.h"
+#include "scene/RenderSettings.h"
 
 #include <QString>
 

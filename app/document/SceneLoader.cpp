@@ -4,8 +4,8 @@
 #include "CameraFile.h"
 #include "Enclosure.h"
 #include "LightsFile.h"
-#include "ModelImporter.h"
 #include "SceneRebase.h"
+#include "import/ModelImporter.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,6 +1,6 @@
 #include "sync/SceneSync.h"
 
-#include "core/Renderer.h"
+#include "Renderer.h"
 #include "document/Document.h"
 
 namespace vct::sync {

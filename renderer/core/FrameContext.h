@@ -4,9 +4,9 @@
 #include "core/FrameResources.h"
 #include "core/FrameShape.h"
 #include "core/GpuScene.h"
-#include "core/RenderSettings.h"
 #include "core/ShaderLibrary.h"
 #include "scene/Camera.h"
+#include "scene/RenderSettings.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>

@@ -1,9 +1,9 @@
 #include "passes/ConeTracePass.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 #include "core/PixelClass.h"
 #include "debug/ConeSampleCounter.h"
-#include "passes/ConeTracingSetup.h"
 #include "passes/VoxelIrradiancePass.h"
 
 #include <tuple>

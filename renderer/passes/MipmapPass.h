@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/RenderPass.h"
-#include "passes/VoxelMipBuilder.h"
+#include "core/VoxelMipBuilder.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 #include "passes/VoxelBouncePass.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
-#include "passes/ConeTracingSetup.h"
 
 #include <algorithm>
 #include <cmath>

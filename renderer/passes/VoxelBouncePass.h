@@ -1,11 +1,11 @@
 #pragma once
 
+#include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
+#include "core/VoxelMipBuilder.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "passes/ConeTraceKey.h"
-#include "passes/VoxelMipBuilder.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "passes/VoxelIrradiancePass.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
-#include "passes/ConeTracingSetup.h"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
 #pragma once
 
+#include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
-#include "passes/ConeTraceKey.h"
 
 #include <glm/mat4x4.hpp>
 

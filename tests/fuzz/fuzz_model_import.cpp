@@ -1,7 +1,7 @@
 // libFuzzer target: the model importer (Assimp behind our wrapper) must turn any bytes into a scene or an
 // error, never a crash. The format is picked from the first bytes as a user's file extension would.
 #include "document/ImportReport.h"
-#include "document/ModelImporter.h"
+#include "import/ModelImporter.h"
 #include "scene/Scene.h"
 
 #include <QDir>

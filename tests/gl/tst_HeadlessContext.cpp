@@ -1,5 +1,5 @@
+#include "Renderer.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 
 #include <glad/gl.h>
 

@@ -4,8 +4,8 @@
 #include "ui/AccuracyChartDock.h"
 #include "ui/ImagePane.h"
 #include "ui/MainWindow.h"
-#include "ui/ReferenceCompareDock.h"
 #include "ui/ViewportWidget.h"
+#include "ui/reference/ReferenceCompareDock.h"
 
 #include "document/Document.h"
 #include "imageio/ImageMetrics.h"

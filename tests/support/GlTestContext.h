@@ -1,7 +1,7 @@
 #pragma once
 
+#include "Renderer.h"
 #include "context/HeadlessContext.h"
-#include "core/Renderer.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
 #include "core/ConeMath.h"
 #include "core/ConeSet.h"
-#include "core/RenderSettings.h"
 #include "core/VoxelGridFrame.h"
+#include "scene/RenderSettings.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

@@ -1,8 +1,8 @@
 #include "TestSupport.h"
 
 #include "document/ImportReport.h"
-#include "document/ModelImporter.h"
-#include "document/ModelPreflight.h"
+#include "import/ModelImporter.h"
+#include "import/ModelPreflight.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,7 +1,7 @@
 #include "TestSupport.h"
 
 #include "document/Document.h"
-#include "document/ModelImporter.h"
+#include "import/ModelImporter.h"
 
 #include <QDir>
 #include <QtTest>

@@ -1,6 +1,6 @@
 #include "TestSupport.h"
 
-#include "document/ModelImporter.h"
+#include "import/ModelImporter.h"
 
 #include <QtTest>
 

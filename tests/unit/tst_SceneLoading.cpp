@@ -4,8 +4,8 @@
 #include "document/BuiltinScenes.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
-#include "document/ModelImporter.h"
 #include "document/SceneLoader.h"
+#include "import/ModelImporter.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,7 +1,7 @@
 #include "ReferenceCompareDock.h"
 
-#include "ImagePane.h"
 #include "ReferenceJob.h"
+#include "ui/ImagePane.h"
 
 #include "document/Document.h"
 #include "imageio/ToneMapper.h"

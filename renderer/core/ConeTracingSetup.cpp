@@ -1,6 +1,6 @@
-#include "passes/ConeTracingSetup.h"
+#include "core/ConeTracingSetup.h"
 
-#include "passes/ConeTraceKey.h"
+#include "core/ConeTraceKey.h"
 
 #include "core/FrameContext.h"
 

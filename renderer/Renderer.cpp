@@ -1,4 +1,4 @@
-#include "core/Renderer.h"
+#include "Renderer.h"
 
 #include "scene/CameraBasis.h"
 
@@ -6,6 +6,7 @@
 #include "core/FrameContext.h"
 #include "core/Pipeline.h"
 #include "core/ShaderLibrary.h"
+#include "core/VoxelMipBuilder.h"
 #include "debug/ConeSampleCounter.h"
 #include "debug/FiniteCheck.h"
 #include "debug/VoxelInspector.h"
@@ -19,7 +20,6 @@
 #include "passes/ShadowMapPass.h"
 #include "passes/VoxelBouncePass.h"
 #include "passes/VoxelIrradiancePass.h"
-#include "passes/VoxelMipBuilder.h"
 #include "passes/VoxelizePass.h"
 
 #include <glad/gl.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/VoxelSceneNeeds.h"
+#include "scene/VoxelSceneNeeds.h"
 
 #include <cstdint>
 #include <string>

@@ -1,4 +1,4 @@
-#include "passes/VoxelMipBuilder.h"
+#include "core/VoxelMipBuilder.h"
 
 #include "core/FrameResources.h"
 #include "core/ShaderLibrary.h"

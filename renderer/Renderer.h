@@ -2,11 +2,11 @@
 
 #include "core/FrameStats.h"
 #include "core/NonFiniteCount.h"
-#include "core/RenderSettings.h"
 #include "core/VoxelChannel.h"
 #include "core/VoxelTextureMemory.h"
 #include "gl/GlLoader.h"
 #include "image/RadianceImage.h"
+#include "scene/RenderSettings.h"
 #include "scene/Scene.h"
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "core/RenderSettings.h"
+#include "scene/RenderSettings.h"
 
 #include <charconv>
 #include <cmath>
