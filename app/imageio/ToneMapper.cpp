@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+// The GLSL file is the single definition of the display curve (the viewport's present/Present.frag too).
+#include "common/ToneCurve.glsl"
+
 namespace vct::io {
 
 // Why Narkowicz's ACES fit rather than Hable (Uncharted 2): it is one rational function with no
@@ -17,8 +20,7 @@ float ToneMapper::filmic(float x)
         return 0.0f; // also NaN
     if (std::isinf(x))
         return 1.0f;
-    constexpr float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
-    return std::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
+    return std::clamp(TONE_FILMIC(x), 0.0f, 1.0f);
 }
 
 float ToneMapper::exposureFromEv(float ev)
@@ -32,9 +34,9 @@ float ToneMapper::srgbOetf(float linear)
         return 0.0f;
     if (linear >= 1.0f)
         return 1.0f;
-    if (linear <= 0.0031308f)
-        return 12.92f * linear;
-    return 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    if (linear <= TONE_SRGB_THRESHOLD)
+        return TONE_SRGB_LINEAR(linear);
+    return TONE_SRGB_POWER_SCALE * std::pow(linear, TONE_SRGB_EXPONENT) - TONE_SRGB_POWER_OFFSET;
 }
 
 std::uint8_t ToneMapper::toByte(float encoded)

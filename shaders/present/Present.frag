@@ -1,5 +1,7 @@
-// Shows the linear frame on screen: exposure, the Narkowicz ACES fit and the sRGB curve, matching
-// app/imageio/ToneMapper (the PNG writer) so the viewport and an exported PNG agree.
+// Shows the linear frame on screen: exposure, the Narkowicz ACES fit and the sRGB curve, from the one
+// definition the PNG writer uses too (common/ToneCurve.glsl), so the viewport and an exported PNG agree.
+#include "common/ToneCurve.glsl"
+
 layout(binding = 0) uniform sampler2D uRadiance;
 uniform float uExposure;
 uniform vec4 uTarget; // x, y, width, height of the target rectangle in window pixels
@@ -8,12 +10,13 @@ layout(location = 0) out vec4 oColor;
 
 vec3 filmic(vec3 x)
 {
-    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+    return clamp(TONE_FILMIC(x), 0.0, 1.0);
 }
 
 vec3 srgbOetf(vec3 c)
 {
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+    return mix(TONE_SRGB_LINEAR(c), TONE_SRGB_POWER_SCALE * pow(c, vec3(TONE_SRGB_EXPONENT)) - TONE_SRGB_POWER_OFFSET,
+        step(vec3(TONE_SRGB_THRESHOLD), c));
 }
 
 void main()
