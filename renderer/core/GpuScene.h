@@ -14,14 +14,17 @@
 #include <memory>
 #include <vector>
 
+// The GLSL file is the single definition of the shared texture units and light limits.
+#include "common/Bindings.glsl"
+
 namespace vct::render {
 
-/** Texture unit of the material table in the passes that read the g-buffer (MATERIAL_TABLE_UNIT). */
-constexpr GLuint kMaterialTableUnit = 3;
+/** Texture unit of the material table in the passes that read the g-buffer. */
+constexpr GLuint kMaterialTableUnit = MATERIAL_TABLE_UNIT;
 /** Texture units of the area-light table and the opacity volume its visibility cones trace
  * (common/AreaLights.glsl). */
-constexpr GLuint kAreaLightTableUnit = 11;
-constexpr GLuint kOpacityUnit = 15;
+constexpr GLuint kAreaLightTableUnit = AREA_LIGHT_UNIT;
+constexpr GLuint kOpacityUnit = OPACITY_UNIT;
 
 /** Which meshes a draw covers: the voxelizer draws static and dynamic meshes into separate layers. */
 enum class MeshFilter { All, Static, Dynamic };

@@ -50,11 +50,11 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
     program.set("uDirectionalLightTanHalf", tanHalves);
     // Samplers must always see a texture of their type, even with no light of that kind.
     if (shadows.pointDepth) {
-        shadows.pointDepth.bindUnit(8);
+        shadows.pointDepth.bindUnit(kPointShadowUnit);
         shadows.pointDepth.bindUnit(kPointDepthUnit);
     }
     if (shadows.directionalDepth) {
-        shadows.directionalDepth.bindUnit(9);
+        shadows.directionalDepth.bindUnit(kDirectionalShadowUnit);
         shadows.directionalDepth.bindUnit(kDirectionalDepthUnit);
     }
     // The same maps again, read through a sampler without comparison (common/Lights.glsl).

@@ -4,16 +4,23 @@
 #include "gl/Program.h"
 #include "scene/Scene.h"
 
+// The GLSL file is the single definition of the shared texture units and light limits.
+#include "common/Bindings.glsl"
+
 namespace vct::render {
 
-/** Lights beyond these counts are ignored (and reported by the renderer); shaders/common/Lights.glsl agrees.
- */
-constexpr int kMaxPointLights = 8;
-constexpr int kMaxDirectionalLights = 4;
-/// Where shaders/common/Lights.glsl reads the shadow maps as raw depth (POINT_DEPTH_UNIT,
-/// DIRECTIONAL_DEPTH_UNIT).
-constexpr GLuint kPointDepthUnit = 16;
-constexpr GLuint kDirectionalDepthUnit = 17;
+/** Lights beyond these counts are ignored (and reported by the renderer). */
+constexpr int kMaxPointLights = MAX_POINT_LIGHTS;
+constexpr int kMaxDirectionalLights = MAX_DIRECTIONAL_LIGHTS;
+/// Where shaders/common/Lights.glsl reads the shadow maps with depth comparison, and as raw depth.
+constexpr GLuint kPointShadowUnit = POINT_SHADOW_UNIT;
+constexpr GLuint kDirectionalShadowUnit = DIRECTIONAL_SHADOW_UNIT;
+constexpr GLuint kPointDepthUnit = POINT_DEPTH_UNIT;
+constexpr GLuint kDirectionalDepthUnit = DIRECTIONAL_DEPTH_UNIT;
+/// The irradiance cells common/IrradianceLookup.glsl reads (the cache's, or the bounce iteration's).
+constexpr GLuint kIrradianceUnit = IRRADIANCE_UNIT;
+constexpr GLuint kCellNormalUnit = CELL_NORMAL_UNIT;
+constexpr GLuint kIrradianceBackUnit = IRRADIANCE_BACK_UNIT;
 
 /** Sets the uniforms and binds the shadow maps that shaders/common/Lights.glsl reads. */
 void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows);

@@ -2,6 +2,7 @@
 
 #include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
+#include "core/LightUniforms.h"
 #include "core/PixelClass.h"
 #include "debug/ConeSampleCounter.h"
 #include "passes/VoxelIrradiancePass.h"
@@ -107,9 +108,9 @@ void ConeTracePass::execute(FrameContext& frame)
             { "common/FullScreen.vert", "cone/ClassifyPixels.frag" },
             cached ? std::vector<std::string> { "IRRADIANCE_CACHE" } : std::vector<std::string> {} });
     if (cached) {
-        v.irradiance.bindUnit(12);
-        v.irradianceNormal.bindUnit(13);
-        v.irradianceBack.bindUnit(14);
+        v.irradiance.bindUnit(kIrradianceUnit);
+        v.irradianceNormal.bindUnit(kCellNormalUnit);
+        v.irradianceBack.bindUnit(kIrradianceBackUnit);
         classify.set("uCells", v.irradiance.width());
         classify.set("uCellSize", v.frame.extent / float(v.irradiance.width()));
     }

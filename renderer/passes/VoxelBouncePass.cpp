@@ -2,6 +2,7 @@
 
 #include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
+#include "core/LightUniforms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,9 +124,9 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.radiance.bindUnit(2);
-    v.bounceIrradiance.bindUnit(12);
-    v.bounceCellNormal.bindUnit(13);
-    v.bounceIrradianceBack.bindUnit(14);
+    v.bounceIrradiance.bindUnit(kIrradianceUnit);
+    v.bounceCellNormal.bindUnit(kCellNormalUnit);
+    v.bounceIrradianceBack.bindUnit(kIrradianceBackUnit);
     v.bounced.bindImage(0, 0, GL_READ_WRITE);
     m_residualSums.bindImage(1, 0, GL_READ_WRITE);
     for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))

@@ -8,12 +8,7 @@
 // the light's angular size: soft shadows whose penumbra grows with the light and shrinks toward the occluder
 // (Crassin et al. 2011). Units: radiance W/(m^2 sr) in, irradiance W/m^2 out.
 #define kAreaLightCount AREA_LIGHT_COUNT
-#ifndef AREA_LIGHT_UNIT
-#define AREA_LIGHT_UNIT 11
-#endif
-#ifndef OPACITY_UNIT
-#define OPACITY_UNIT 15
-#endif
+#include "common/Bindings.glsl"
 
 // Four rgba32f texels per light, then three per triangle; each light's first texel holds in .w the texel of its
 // first triangle, as a frame may light with a prefix of the table's lights.

@@ -1,10 +1,11 @@
 // The irradiance cache's lookup (passes/VoxelIrradiancePass): the diffuse cones gathered once per surface cell
 // along its own normal, interpolated for a pixel.
 // Needs uGridOrigin (metres) declared before it.
-layout(binding = 12) uniform sampler3D uIrradiance;
+#include "common/Bindings.glsl"
+layout(binding = IRRADIANCE_UNIT) uniform sampler3D uIrradiance;
 // rgba8 snorm: xyz the cell normal, w = 0 no surface, 0.5 one-sided, 1 two-sided (half the sides, to fit snorm).
-layout(binding = 13) uniform sampler3D uCellNormal;
-layout(binding = 14) uniform sampler3D uIrradianceBack;
+layout(binding = CELL_NORMAL_UNIT) uniform sampler3D uCellNormal;
+layout(binding = IRRADIANCE_BACK_UNIT) uniform sampler3D uIrradianceBack;
 uniform int uCells;         // cache cells per side
 uniform float uCellSize;    // metres
 #include "common/IrradianceCells.glsl"

@@ -1,11 +1,6 @@
 // Analytic lights with shadow maps, shared by voxel injection and the per-pixel composite.
 // Units: point intensity W/sr, directional irradiance W/m^2; results are irradiance (W/m^2) or radiance.
-#define MAX_POINT_LIGHTS 8
-#define MAX_DIRECTIONAL_LIGHTS 4
-#define POINT_SHADOW_UNIT 8
-#define DIRECTIONAL_SHADOW_UNIT 9
-#define POINT_DEPTH_UNIT 16
-#define DIRECTIONAL_DEPTH_UNIT 17
+#include "common/Bindings.glsl"
 
 // Compile-time light counts (POINT_LIGHT_COUNT, DIRECTIONAL_LIGHT_COUNT: the composite and injection variants):
 // with a loop per kind and a count known to the compiler, llvmpipe unrolls each loop and drops the code of a

@@ -3,6 +3,8 @@
 // render targets, and each costs llvmpipe a fixed share of the g-buffer pass. Filled by core/GpuScene.
 // A buffer texture rather than a shader storage buffer: with the storage buffer the composite was slower and
 // gave most of the gain back (docs/DESIGN.md, "Measured choices").
+#include "common/Bindings.glsl"
+
 struct MaterialEntry {
     vec4 specularShininess; // specular reflectance rgb, Phong exponent (0 = not glossy)
     vec4 emission;          // emitted radiance rgb, W/(m^2 sr), front faces only

@@ -18,7 +18,7 @@
 //   AO_AVAILABLE  the cone pass computed ambient occlusion
 #include "common/Lights.glsl"
 #include "common/AreaLights.glsl"
-#define MATERIAL_TABLE_UNIT 3
+#include "common/Bindings.glsl"
 #include "common/MaterialTable.glsl"
 #include "common/GBufferSurface.glsl"
 

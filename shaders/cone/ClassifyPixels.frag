@@ -7,7 +7,7 @@
 #extension GL_ARB_shader_stencil_export : require
 #include "common/PixelClass.glsl"
 #include "common/GBufferSurface.glsl"
-#define MATERIAL_TABLE_UNIT 3
+#include "common/Bindings.glsl"
 #include "common/MaterialTable.glsl"
 #include "cone/TracedPixel.glsl"
 

@@ -5,7 +5,7 @@
 #include "common/ConeTracing.glsl"
 #include "cone/TracedPixel.glsl"
 #include "common/GBufferSurface.glsl"
-#define MATERIAL_TABLE_UNIT 3
+#include "common/Bindings.glsl"
 #include "common/MaterialTable.glsl"
 
 // The stencil test must reject pixels before the shader runs even in the COUNT_SAMPLES variant, whose

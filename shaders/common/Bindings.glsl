@@ -1,0 +1,21 @@
+// Texture units shared by several passes' shaders, and the light limits, defined once for GLSL and C++
+// (core/GpuScene.h, core/LightUniforms.h and passes/ include this file), so a unit cannot drift between the
+// shader that samples it and the code that binds it.
+#ifndef BINDINGS_GLSL
+#define BINDINGS_GLSL
+
+#define MATERIAL_TABLE_UNIT 3 // the material table of the passes that read the g-buffer
+#define POINT_SHADOW_UNIT 8 // shadow maps with depth comparison (common/Lights.glsl)
+#define DIRECTIONAL_SHADOW_UNIT 9
+#define AREA_LIGHT_UNIT 11 // the area-light table (common/AreaLights.glsl)
+#define IRRADIANCE_UNIT 12 // irradiance cells (common/IrradianceLookup.glsl): front,
+#define CELL_NORMAL_UNIT 13 // their normals and sides,
+#define IRRADIANCE_BACK_UNIT 14 // and back faces
+#define OPACITY_UNIT 15 // the opacity volume the area lights' shadow cones trace
+#define POINT_DEPTH_UNIT 16 // the same shadow maps as raw depth (soft shadows' blocker search)
+#define DIRECTIONAL_DEPTH_UNIT 17
+
+#define MAX_POINT_LIGHTS 8 // lights beyond these are ignored, and reported by the renderer
+#define MAX_DIRECTIONAL_LIGHTS 4
+
+#endif
