@@ -84,7 +84,14 @@ MainWindow::MainWindow(QWidget* parent)
     buildMenus();
     resize(1280, 800);
     const QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    // The client area is saved and restored as it is. restoreGeometry() guesses the frame of a window not
+    // shown yet, and where no window manager reports one it put the window a title bar (20 px) lower on
+    // every start (tst_Layout::restoredSessionKeepsTheViewInPlace).
+    const QRect saved = settings.value(QStringLiteral("window/rect")).toRect();
+    if (saved.isValid() && QGuiApplication::screenAt(saved.center()))
+        setGeometry(saved);
+    if (settings.value(QStringLiteral("window/maximized")).toBool())
+        setWindowState(windowState() | Qt::WindowMaximized);
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
@@ -611,7 +618,8 @@ void MainWindow::closeEvent(QCloseEvent* event)
         return;
     }
     QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/rect"), normalGeometry());
+    settings.setValue(QStringLiteral("window/maximized"), isMaximized());
     settings.setValue(QStringLiteral("window/state"), saveState());
     // A normal close leaves no recovery file, so the next start offers none.
     QFile::remove(recoveryPath());

@@ -1,7 +1,7 @@
 // Averages this fragment's material into every voxel its pixel column crosses (common/VoxelWords.glsl), so
-// overlapping fragments, static and dynamic alike, average instead of the last one winning. The fragment whose update finds a voxel empty
-// lists it (core/OccupiedCellList) for the resolve and, after a full rebuild, for light injection: no pass has
-// to search the grid for the voxels drawn.
+// overlapping fragments, static and dynamic alike, average instead of the last one winning. The fragment whose
+// update finds a voxel empty lists it (core/OccupiedCellList) for the resolve and, after a full rebuild, for
+// light injection: no pass has to search the grid for the voxels drawn.
 // EMISSIVE: the variant for emissive materials (passes/VoxelizePass). Other materials leave the emission word
 // alone unless it holds light, so most fragments skip its compare-and-swap.
 #include "common/VoxelWords.glsl"

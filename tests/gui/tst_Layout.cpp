@@ -8,6 +8,7 @@
 #include "document/Document.h"
 
 #include <QPushButton>
+#include <QSettings>
 #include <QtTest>
 
 using namespace vct;
@@ -21,7 +22,22 @@ public:
 
 private slots:
     void addingLightsKeepsTheViewInPlace();
+    void restoredSessionKeepsTheViewInPlace();
 };
+
+namespace {
+
+QRect viewRect(ui::MainWindow& window)
+{
+    return QRect(window.viewport()->mapTo(&window, QPoint(0, 0)), window.viewport()->size());
+}
+
+QString describe(const QRect& r)
+{
+    return QStringLiteral("%1,%2 %3x%4").arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height());
+}
+
+} // namespace
 
 void LayoutTest::addingLightsKeepsTheViewInPlace()
 {
@@ -50,6 +66,32 @@ void LayoutTest::addingLightsKeepsTheViewInPlace()
                            .arg(viewRect().width())
                            .arg(viewRect().height())));
     }
+}
+
+// Closing saves the window and its docks; the next start restores them where they were (issue 20: a restored
+// session opened shifted by about 20 pixels).
+void LayoutTest::restoredSessionKeepsTheViewInPlace()
+{
+    QSettings().remove(QStringLiteral("window"));
+    QRect firstView, firstFrame;
+    {
+        auto window = test::showEditor(QStringLiteral("builtin:cornell_point"));
+        QVERIFY(window);
+        QTest::qWait(100);
+        firstView = viewRect(*window);
+        firstFrame = window->geometry();
+        QVERIFY(window->close());
+    }
+    auto window = std::make_unique<ui::MainWindow>();
+    window->openInitial(QStringLiteral("builtin:cornell_point"));
+    window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+    QTest::qWait(100);
+    QVERIFY2(window->geometry() == firstFrame,
+        qPrintable(
+            QStringLiteral("window %1, was %2").arg(describe(window->geometry()), describe(firstFrame))));
+    QVERIFY2(viewRect(*window) == firstView,
+        qPrintable(QStringLiteral("view %1, was %2").arg(describe(viewRect(*window)), describe(firstView))));
 }
 
 QTEST_MAIN(LayoutTest)
