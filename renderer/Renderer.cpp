@@ -359,6 +359,15 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
             || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
         st.voxels.inspectionMips = gl::Texture();
     stats.voxelBytes = st.voxels.byteSize();
+    if (st.voxels.occupiedCountStale) {
+        // The static list names every static voxel, the dynamic one those only moving objects reach (static
+        // meshes are drawn first, and a list takes a voxel from the first fragment to reach it): together,
+        // each once. Read after the whole frame is queued, not inside the voxelize pass, so the readback does
+        // not hold back the passes after it.
+        st.voxels.occupiedCount = st.voxels.staticVoxels.count()
+            + (st.scene->hasDynamicMeshes() ? st.voxels.dynamicVoxels.count() : 0);
+        st.voxels.occupiedCountStale = false;
+    }
     stats.occupiedVoxels = st.voxels.occupiedCount;
     stats.width = width;
     stats.height = height;

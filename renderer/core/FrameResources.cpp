@@ -1,7 +1,5 @@
 #include "core/FrameResources.h"
 
-#include "core/VoxelTextureMemory.h"
-
 namespace vct::render {
 
 std::vector<VoxelVolume::NamedTexture> VoxelVolume::textures() const
@@ -20,8 +18,10 @@ std::vector<VoxelVolume::NamedTexture> VoxelVolume::textures() const
 std::size_t VoxelVolume::byteSize() const
 {
     std::size_t total = 0;
-    for (const VoxelTextureMemory& texture : describeVoxelMemory(*this))
-        total += texture.totalBytes();
+    // From the textures' own sizes: asked every frame for the stats, so no GL queries (describeVoxelMemory
+    // adds GL's description of each level, for the benchmarks and tests).
+    for (const NamedTexture& named : textures())
+        total += *named.texture ? named.texture->byteSize() : 0;
     return total;
 }
 

@@ -97,8 +97,10 @@ struct VoxelVolume {
         return { &staticVoxels };
     }
 
-    /// Voxels holding a surface, counted from the voxelizer's lists after each voxelization (statistics).
+    /// Voxels holding a surface, for the statistics: counted from the voxelizer's lists once a frame that
+    /// voxelized has been submitted (Renderer::renderFrame), when occupiedCountStale says they changed.
     std::size_t occupiedCount = 0;
+    bool occupiedCountStale = false;
 
     /** One row of textures(): a voxel texture and the name tools show it by. */
     struct NamedTexture {

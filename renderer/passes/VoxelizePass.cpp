@@ -3,8 +3,6 @@
 #include "core/FrameContext.h"
 #include "core/Frustum.h"
 
-#include <utility>
-
 namespace vct::render {
 
 namespace {
@@ -191,11 +189,7 @@ void VoxelizePass::execute(FrameContext& frame)
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
     m_conservative = frame.settings.conservativeVoxelization;
-    // The static list names every static voxel, the dynamic one those only moving objects reach (static
-    // meshes are drawn first, and a list takes a voxel from the first fragment to reach it): together, each
-    // once.
-    if (!region.isEmpty())
-        v.occupiedCount = v.staticVoxels.count() + (hasDynamic ? v.dynamicVoxels.count() : 0);
+    v.occupiedCountStale = v.occupiedCountStale || !region.isEmpty();
     v.changedRegion = region;
     v.onlyDynamicChanged = !staticChanged;
     v.dynamicMoved = dynamicMoved;
