@@ -376,6 +376,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     stats.bounceIterations = st.voxels.bounceProgress.iterations;
     stats.bounceResidual = st.voxels.bounceProgress.residual;
     stats.lightConverged = st.voxels.bounceProgress.converged;
+    stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
     return stats;
 }
 

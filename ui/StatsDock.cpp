@@ -138,10 +138,12 @@ void StatsDock::showStats(const render::FrameStats& stats)
     m_frame->setText(
         stats.width > 0 ? tr("%1 × %2 px").arg(stats.width).arg(stats.height) : QStringLiteral("—"));
     if (stats.bounceIterations > 0)
-        m_bounces->setText(tr("%1, residual %2%3")
-                               .arg(stats.bounceIterations)
-                               .arg(stats.bounceResidual, 0, 'g', 2)
-                               .arg(stats.lightConverged ? QString() : tr(", converging…")));
+        m_bounces->setText(
+            tr("%1, %2 %3%4")
+                .arg(stats.bounceIterations)
+                .arg(stats.bounceExtrapolated ? tr("extrapolated, est. error") : tr("residual"))
+                .arg(stats.bounceResidual, 0, 'g', 2)
+                .arg(stats.lightConverged ? QString() : tr(", converging…")));
     else
         m_bounces->setText(tr("one bounce"));
 }

@@ -27,6 +27,7 @@ QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const ren
     root["bounce_iterations"] = last.bounceIterations;
     root["bounce_residual"] = last.bounceResidual;
     root["light_converged"] = last.lightConverged;
+    root["bounce_extrapolated"] = last.bounceExtrapolated;
     QJsonArray passes;
     std::vector<double> totals;
     for (const render::FrameStats& f : frames)

@@ -21,8 +21,11 @@ constexpr int kDirectionalTiles = 6;
 /** How far the bounce iteration (passes/VoxelBouncePass) has come for the current first-bounce radiance. */
 struct BounceProgress {
     int iterations = 0;
-    double residual = 0.0; ///< relative change of the voxels' radiance in the last iteration
+    /// Relative change of the voxels' radiance in the last iteration; once extrapolated, the estimated
+    /// relative error of the extrapolated light instead.
+    double residual = 0.0;
     bool converged = true; ///< false while iterations are still to come (spread over frames)
+    bool extrapolated = false; ///< the iterations' geometric tail was added (VoxelBouncePass)
 };
 
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */

@@ -42,6 +42,7 @@ struct FrameStats {
     int bounceIterations = 0;
     double bounceResidual = 0.0;
     bool lightConverged = true;
+    bool bounceExtrapolated = false; ///< the geometric tail was added (bounceResidual is then its error)
 };
 
 } // namespace vct::render

@@ -4,6 +4,8 @@
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 
+#include "bounce/BounceSums.glsl"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -64,8 +66,8 @@ void VoxelBouncePass::allocate(VoxelVolume& v, int cells, int levels)
             *t = gl::Texture::create3D(t == &v.bounceCellNormal ? GL_RGBA8_SNORM : GL_RGBA16F, cells);
             t->setFilter(GL_NEAREST, GL_NEAREST);
         }
-    if (!m_residualSums)
-        m_residualSums = gl::Texture::create2D(GL_R32F, 2 * kResidualSlots, 1);
+    if (!m_sums)
+        m_sums = gl::Texture::create2D(GL_R32F, BOUNCE_SUMS_PER_ITERATION * BOUNCE_SUMS_ITERATIONS, 1);
 }
 
 void VoxelBouncePass::buildMips(FrameContext& frame)
@@ -79,34 +81,79 @@ void VoxelBouncePass::buildMips(FrameContext& frame)
 
 void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
 {
-    // The first-bounce volume is kept at level 0 only (MipmapPass): its light becomes the first iterate here,
-    // filtered into the bounced volume's own levels, and the first gather reads it from there.
+    // The first-bounce volume is kept at level 0 only (MipmapPass): its light is the first iterate here. With
+    // anisotropic mips its directional chains are filtered into the bounced volume's, and the first gather
+    // reads level 0 from the first-bounce volume itself; box mips live in the volume's own chain, so level 0
+    // is copied into the bounced volume and filtered there.
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    if (frame.settings.anisotropicMips) {
+        m_builder.buildDirectional(frame.shaders, v.radiance, res, v.bouncedDirectional);
+        return;
+    }
     glCopyImageSubData(
         v.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.bounced.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res, res, res);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     buildMips(frame);
 }
 
-void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
+void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
 {
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips;
+    const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.bounceCellSize, res);
     const int cells = res / cellSize;
 
-    // Gather: the irradiance cache's shader, over every occupied cell, from the current iterate.
-    const gl::Program& gather = frame.shaders.program(
-        { anisotropic ? "bounce cells (anisotropic)" : "bounce cells", { "irradiance/GatherCells.comp" },
-            anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
+    // Gather: the irradiance cache's shader, over every occupied cell, from the current iterate. Its first
+    // run on these voxels finds each cell's normal and sides; later ones read them back. When converging it
+    // also sums how much the gather changed.
+    std::vector<std::string> defines;
+    std::string name = "bounce cells";
+    if (anisotropic) {
+        defines.emplace_back("ANISOTROPIC");
+        name += " (anisotropic)";
+    }
+    if (m_cellGeometryKnown) {
+        defines.emplace_back("CACHED_GEOMETRY");
+        name += ", cell geometry known";
+    }
+    if (converging) {
+        defines.emplace_back("CHANGE_SUMS");
+        name += ", change sums";
+    }
+    const gl::Program& gather = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
     ConeTracingSetup::applyCellGather(gather, frame, anisotropic, cellSize, false, v.bounceIrradiance,
         v.bounceIrradianceBack, v.bounceCellNormal);
+    if (m_cellGeometryKnown)
+        v.bounceCellNormal.bindUnit(2);
+    if (!compare && anisotropic) // the first iterate's level 0 (startFromFirstBounce)
+        v.radiance.bindUnit(5);
+    if (converging) {
+        v.bounceIrradiance.bindImage(0, 0, GL_READ_WRITE);
+        v.bounceIrradianceBack.bindImage(1, 0, GL_READ_WRITE);
+        m_sums.bindImage(3, 0, GL_READ_WRITE);
+        gather.set("uIteration", iteration);
+        gather.set("uFirstGather", compare ? 0 : 1);
+    }
     gather.use();
     m_cells.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    m_cellGeometryKnown = true;
+
+    if (converging) {
+        const gl::Program& decide
+            = frame.shaders.program({ "bounce tail decision", { "bounce/DecideTail.comp" }, {} });
+        decide.use();
+        decide.set("uIteration", iteration);
+        decide.set("uTolerance", frame.settings.bounceTolerance);
+        decide.set("uLargestRatio", float(kLargestRatio));
+        m_sums.bindImage(1, 0, GL_READ_WRITE);
+        glDispatchCompute(1, 1, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
 
     // Reinject: L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
@@ -120,7 +167,7 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
     m_reinject->set("uCells", cells);
     m_reinject->set("uCellSize", v.frame.extent / float(cells));
     m_reinject->set("uCompare", compare ? 1 : 0);
-    m_reinject->set("uResidualSlot", slot);
+    m_reinject->set("uIteration", iteration);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.radiance.bindUnit(2);
@@ -128,7 +175,7 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
     v.bounceCellNormal.bindUnit(kCellNormalUnit);
     v.bounceIrradianceBack.bindUnit(kIrradianceBackUnit);
     v.bounced.bindImage(0, 0, GL_READ_WRITE);
-    m_residualSums.bindImage(1, 0, GL_READ_WRITE);
+    m_sums.bindImage(1, 0, GL_READ_WRITE);
     for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
         voxels->dispatchOverCells();
     glMemoryBarrier(
@@ -136,17 +183,39 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int slot)
     buildMips(frame);
 }
 
-std::vector<double> VoxelBouncePass::readResiduals(int count)
+std::vector<VoxelBouncePass::Change> VoxelBouncePass::readChanges(int first, int count)
 {
-    std::vector<float> sums(std::size_t(2 * kResidualSlots));
-    glGetTextureImage(
-        m_residualSums.id(), 0, GL_RED, GL_FLOAT, GLsizei(sums.size() * sizeof(float)), sums.data());
-    std::vector<double> residuals;
-    for (int k = 0; k < count; ++k) {
-        const float change = sums[std::size_t(2 * k)], total = sums[std::size_t(2 * k + 1)];
-        residuals.push_back(total > 0.0f ? double(change) / double(total) : 0.0);
+    std::vector<float> sums(std::size_t(BOUNCE_SUMS_PER_ITERATION * BOUNCE_SUMS_ITERATIONS));
+    glGetTextureImage(m_sums.id(), 0, GL_RED, GL_FLOAT, GLsizei(sums.size() * sizeof(float)), sums.data());
+    std::vector<Change> changes;
+    for (int k = first; k < first + count; ++k) {
+        const auto at
+            = [&](int which) { return double(sums[std::size_t(BOUNCE_SUMS_PER_ITERATION * k + which)]); };
+        changes.push_back({ at(BOUNCE_SUM_VOXEL_CHANGE), at(BOUNCE_SUM_VOXEL_TOTAL), at(BOUNCE_SUM_TAIL),
+            at(BOUNCE_SUM_TAIL_ERROR) });
     }
-    return residuals;
+    return changes;
+}
+
+void VoxelBouncePass::judge(const Change& change, double tolerance)
+{
+    m_residual = change.total > 0.0 ? change.change / change.total : 0.0;
+    if (change.tail > 0.0) {
+        // bounce/DecideTail.comp added the tail, having estimated its error under the tolerance.
+        m_extrapolated = true;
+        m_done = true;
+        m_residual = change.tailError;
+        m_lastChange = 0.0;
+        return;
+    }
+    // Otherwise converged when this change and those still to come, the last one times the tail q / (1 - q)
+    // (q: the ratio of two consecutive changes, none taken across an extrapolation), are under the tolerance.
+    const double q = m_lastChange > 0.0 ? change.change / m_lastChange : -1.0;
+    if (q > 0.0 && q < kLargestRatio)
+        m_tail = q / (1.0 - q);
+    m_lastChange = change.change;
+    m_done = m_iterations >= 2 && m_residual < tolerance
+        && m_residual * (m_tail > 0.0 ? m_tail : 1.0) < tolerance;
 }
 
 void VoxelBouncePass::execute(FrameContext& frame)
@@ -170,6 +239,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_builder.listCells(
             frame.shaders, res, v.frame.levelCount(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
         m_listedMaterials = v.materialsVersion;
+        m_cellGeometryKnown = false;
     }
     // An interactive view starts a new solve from the last one where the voxels are the same, so that a light
     // edit brightens or dims the bounces smoothly instead of starting again from one bounce.
@@ -178,8 +248,13 @@ void VoxelBouncePass::execute(FrameContext& frame)
         startFromFirstBounce(frame);
     if (!sameSolve) {
         m_iterations = 0;
-        m_residual = m_previousResidual = 0.0;
+        m_residual = 0.0;
+        m_lastChange = 0.0;
+        m_tail = -1.0;
         m_done = false;
+        m_extrapolated = false;
+        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        glClearTexImage(m_sums.id(), 0, GL_RED, GL_FLOAT, zero);
     }
     const int limit = iterationLimit(frame);
     const int budget = progressive ? frame.bounceIterationsPerFrame : limit;
@@ -188,41 +263,31 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // converges fully decides after each one, so that it stops where the change is small enough.
     for (int ran = 0; ran < budget && !m_done;) {
         const int batch = std::min(
-            { converging && progressive ? kResidualSlots : 1, budget - ran, limit - m_iterations });
-        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-        glClearTexImage(m_residualSums.id(), 0, GL_RED, GL_FLOAT, zero);
-        for (int slot = 0; slot < batch; ++slot) {
+            { converging && progressive ? kBatchIterations : 1, budget - ran, limit - m_iterations });
+        for (int k = 0; k < batch; ++k) {
             // The first iteration of a cold start gathers from the first-bounce light; its reinjection then
             // overwrites every occupied voxel, and the clear before it every other.
-            iterate(frame, warm, slot);
+            iterate(frame, warm, m_iterations + k);
             warm = true;
         }
         ran += batch;
-        const std::vector<double> residuals
-            = converging ? readResiduals(batch) : std::vector<double>(std::size_t(batch), 0.0);
-        for (const double residual : residuals) {
-            ++m_iterations;
-            if (converging) {
-                m_previousResidual = m_residual;
-                m_residual = residual;
-                // The change shrinks geometrically (by the scene's average albedo times what a gather
-                // captures): the change still to come is about residual * q / (1 - q).
-                const double q = m_iterations >= 3 && m_previousResidual > 0.0
-                    ? std::min(m_residual / m_previousResidual, 0.99)
-                    : 0.5;
-                const double tolerance = double(frame.settings.bounceTolerance);
-                m_done = m_done
-                    || (m_iterations >= 2 && m_residual < tolerance
-                        && m_residual * q / (1.0 - q) < tolerance);
-            }
-            m_done = m_done || m_iterations >= limit;
+        if (!converging) {
+            m_iterations += batch;
+            m_done = m_iterations >= limit;
+            continue;
         }
+        for (const Change& change : readChanges(m_iterations, batch)) {
+            ++m_iterations;
+            if (!m_done)
+                judge(change, double(frame.settings.bounceTolerance));
+        }
+        m_done = m_done || m_iterations >= limit;
     }
     // With anisotropic mips cones read level 0 and the directional chains only; the inspector filters box
     // levels of its own (VoxelVolume::inspectionMips).
     if (!frame.settings.anisotropicMips)
         v.bouncedDirectional = gl::Texture();
-    v.bounceProgress = { m_iterations, m_residual, m_done };
+    v.bounceProgress = { m_iterations, m_residual, m_done, m_extrapolated };
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);
     ++v.bouncedVersion;

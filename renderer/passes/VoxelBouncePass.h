@@ -20,7 +20,9 @@ struct VoxelVolume;
  * begin with), then sets every occupied voxel to L = L_direct + albedo * (what its cells gathered) in
  * VoxelVolume::bounced and filters that into mips; per-pixel cones trace the result. With bounces = N it runs
  * N - 1 iterations; with `converged` until the relative change and the change still to come (from how fast it
- * shrinks) are both under bounceTolerance, at most kMaxBounces.
+ * shrinks) are both under bounceTolerance, at most kMaxBounces, or, usually sooner, until one reinjection has
+ * added the change still to come itself because its estimated error is under the tolerance
+ * (bounce/DecideTail.comp, docs/DESIGN.md).
  *
  * A camera move reuses it. Renderer::setBounceIterationsPerFrame spreads the iterations over frames for an
  * interactive view, starting each new solve from the last one (a light edit then changes the image smoothly);
@@ -51,28 +53,44 @@ private:
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
     void allocate(VoxelVolume& v, int cells, int levels);
-    /** Makes the first-bounce light the current iterate: level 0 copied, the levels cones read filtered. */
+    /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */
     void startFromFirstBounce(FrameContext& frame);
     void buildMips(FrameContext& frame);
     /**
-     * One iteration: gather the cells from the current iterate, reinject, filter; with @p compare, the
-     * residual's sums go to texel pair @p slot of m_residualSums.
+     * Iteration @p iteration of the solve (from 0): gather the cells from the current iterate, decide whether
+     * to add the tail (converging only), reinject, filter; the sums go to the iteration's texels of m_sums.
+     * @p compare: the current iterate is in `bounced` (else the first-bounce light is).
      */
-    void iterate(FrameContext& frame, bool compare, int slot);
-    /** The residuals of the first @p count slots: sum of |change| over sum of radiance (one readback). */
-    std::vector<double> readResiduals(int count);
-    static constexpr int kResidualSlots = 8; ///< iterations whose residuals one readback collects
+    void iterate(FrameContext& frame, bool compare, int iteration);
+    /**
+     * One iteration's sums over the occupied voxels, of |change| of the radiance and of the radiance, and the
+     * tail its reinjection added (0 for none) with that tail's estimated relative error.
+     */
+    struct Change {
+        double change = 0.0, total = 0.0, tail = 0.0, tailError = -1.0;
+    };
+    /** The sums of iterations @p first to @p first + @p count - 1 (one readback). */
+    std::vector<Change> readChanges(int first, int count);
+    /** Takes one iteration's change into the solve's state (m_residual, m_tail, m_done, m_extrapolated). */
+    void judge(const Change& change, double tolerance);
+    /// Above this ratio between consecutive changes the solve is too slow for its tail to be trusted.
+    static constexpr double kLargestRatio = 0.9;
+    static constexpr int kBatchIterations = 8; ///< iterations an interactive frame runs between readbacks
 
     const gl::Program* m_reinject = nullptr;
     OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
-    gl::Texture m_residualSums; ///< r32f, 2 x kResidualSlots: per iteration, sum of |change| and of radiance
+    gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
     std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for
     std::uint64_t m_listedMaterials = 0; ///< the voxels m_cells and the mip lists were made for
     SolveKey m_key;
     int m_iterations = 0;
-    double m_residual = 0.0, m_previousResidual = 0.0;
+    double m_residual = 0.0;
+    double m_lastChange = 0.0; ///< the last iteration's sum of |change|
+    double m_tail = -1.0; ///< q / (1 - q) as last measured, -1 while unknown
     bool m_done = false;
+    bool m_extrapolated = false;
+    bool m_cellGeometryKnown = false; ///< bounceCellNormal holds the listed cells' normals and sides
 };
 
 } // namespace vct::render

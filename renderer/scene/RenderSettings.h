@@ -44,7 +44,8 @@ struct RenderSettings {
     /// already varies slowly, so its cells can be coarser than the irradiance cache's.
     int bounceCellSize = 4;
     /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to
-    /// come estimated from how fast it shrinks, are both under this.
+    /// come estimated from how fast it shrinks, are both under this, or when adding that change still to come
+    /// has an estimated error under this (VoxelBouncePass).
     float bounceTolerance = 0.01f;
     /// Gather the diffuse cones once per surface voxel whenever the voxels' light changes
     /// (VoxelIrradiancePass), and give each pixel a normal-aware trilinear lookup of that instead of its own

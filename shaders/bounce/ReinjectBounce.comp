@@ -3,10 +3,13 @@
 // the cone weights splitting the cosine lobe (sum_i w_i L_i = E / pi, and a Lambertian surface sends
 // albedo / pi * E), where sum_i w_i L_i is what the bounce cells gathered from the previous iterate
 // (irradiance/GatherCells.comp over every occupied cell), looked up as a pixel looks up the irradiance cache.
-// The step also sums, per work group, how much the voxels changed and how bright they are: the residual that
-// decides when the iteration has converged.
+// The step also sums how much the voxels changed and how bright they are: the residual that decides when the
+// iteration has converged.
 #extension GL_NV_shader_atomic_float : require
+#include "bounce/BounceSums.glsl"
 #include "common/OccupiedCells.glsl"
+#define SUMS_BINDING 1
+#include "common/GroupSums.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -14,19 +17,14 @@ layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
 layout(binding = 2) uniform sampler3D uDirect; // first-bounce radiance (direct light and emission), premultiplied
 layout(rgba16f, binding = 0) uniform image3D uBounced; // the previous iterate in, the new one out
-// Texel 2 * uResidualSlot: sum of |change|; the next: sum of radiance (one pair per iteration of a batch).
-layout(r32f, binding = 1) uniform image2D uResidual;
-uniform int uResidualSlot;
+uniform int uIteration; // this iteration's index in the solve (bounce/BounceSums.glsl)
 
 uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform int uCellVoxels; // voxels per bounce cell side
-uniform bool uCompare;   // the previous iterate is valid (not just cleared)
+uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
 
 #include "common/IrradianceLookup.glsl"
-
-shared float sChange[64];
-shared float sTotal[64];
 
 // The voxel's own cell, when no cell around it faces its way. A voxel whose faces cancel (a wall thinner than a
 // voxel, or two surfaces pressed together) sends the same radiance both ways, so it takes the mean of what
@@ -65,25 +63,16 @@ void main()
             vec3 gathered = faced && lookUpIrradiance(p, n, looked) ? looked.rgb : ownCell(voxel, n, faced);
             result.rgb += albedo.rgb * gathered * albedo.a;
         }
-        if (uCompare) {
-            vec3 previous = imageLoad(uBounced, voxel).rgb;
-            change = dot(abs(result.rgb - previous), vec3(1.0));
-        }
+        // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
+        vec3 previous = uCompare ? imageLoad(uBounced, voxel).rgb : texelFetch(uDirect, voxel, 0).rgb;
+        change = dot(abs(result.rgb - previous), vec3(1.0));
         total = dot(result.rgb, vec3(1.0));
+        // Where bounce/DecideTail.comp found the tail q / (1 - q) trustworthy, store L + tail * change: the limit
+        // of the iteration when its change shrinks by q per step. The sums above still measure the plain change.
+        float tail = imageLoad(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_TAIL, 0)).r;
+        if (tail > 0.0)
+            result.rgb = max(result.rgb + tail * (result.rgb - previous), vec3(0.0));
         imageStore(uBounced, voxel, result);
     }
-    sChange[gl_LocalInvocationIndex] = change;
-    sTotal[gl_LocalInvocationIndex] = total;
-    barrier();
-    for (uint stride = 32u; stride > 0u; stride >>= 1u) {
-        if (gl_LocalInvocationIndex < stride) {
-            sChange[gl_LocalInvocationIndex] += sChange[gl_LocalInvocationIndex + stride];
-            sTotal[gl_LocalInvocationIndex] += sTotal[gl_LocalInvocationIndex + stride];
-        }
-        barrier();
-    }
-    if (gl_LocalInvocationIndex == 0u) {
-        imageAtomicAdd(uResidual, ivec2(2 * uResidualSlot, 0), sChange[0]);
-        imageAtomicAdd(uResidual, ivec2(2 * uResidualSlot + 1, 0), sTotal[0]);
-    }
+    addGroupSums(change, total, BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_VOXEL_CHANGE);
 }

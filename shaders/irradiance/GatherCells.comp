@@ -6,6 +6,9 @@
 // A wall thinner than a voxel has both faces in the same voxels, whose normals then cancel: such a cell
 // gathers both sides of the axis along which its neighbours are emptiest (the wall's normal for walls
 // along the grid axes, within 45 degrees otherwise), so that pixels on either face find their light.
+#ifdef CHANGE_SUMS
+#extension GL_NV_shader_atomic_float : require
+#endif
 #include "common/ConeMath.glsl"
 
 #define MAX_CONES 32
@@ -18,10 +21,29 @@ layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uAlbedo;
 layout(binding = 1) uniform sampler3D uNormal;
-layout(rgba16f, binding = 0) writeonly uniform image3D uIrradiance;     // along the cell normal
-layout(rgba16f, binding = 1) writeonly uniform image3D uIrradianceBack; // against it, two-sided cells only
+#ifdef CHANGE_SUMS
+// The bounce iteration (passes/VoxelBouncePass) also sums how much each gather changed from the one before, and
+// the gathers themselves, into its row of sums (bounce/BounceSums.glsl): the ratio between two iterations'
+// changes is how fast the iteration converges (bounce/DecideTail.comp).
+#include "bounce/BounceSums.glsl"
+#define SUMS_BINDING 3
+#include "common/GroupSums.glsl"
+uniform int uIteration; // this iteration's index in the solve
+uniform bool uFirstGather; // what the cells hold is not an earlier gather of this solve: count it as nothing
+#define GATHER_ACCESS
+#else
+#define GATHER_ACCESS writeonly
+#endif
+layout(rgba16f, binding = 0) GATHER_ACCESS uniform image3D uIrradiance;     // along the cell normal
+layout(rgba16f, binding = 1) GATHER_ACCESS uniform image3D uIrradianceBack; // against it, two-sided cells only
 // xyz: the cell's unit normal; w: 0 = no surface, 1 = one-sided, 2 = two-sided (uIrradianceBack is valid)
 layout(rgba8_snorm, binding = 2) writeonly uniform image3D uCellNormal; // w = sides / 2 (common/IrradianceLookup.glsl)
+#ifdef CACHED_GEOMETRY
+// The bounce iteration gathers the same cells again and again from the same voxels: after the first gather the
+// normals and sides it wrote are read back instead of found again (for a two-sided cell that search reads six
+// neighbouring cells, and llvmpipe runs it in every lane of a group where one cell needs it).
+layout(binding = 2) uniform sampler3D uCellGeometry; // what the first gather wrote to uCellNormal
+#endif
 
 uniform int uResolution; // voxels per side
 uniform int uCellSize;   // voxels per cell side
@@ -43,14 +65,46 @@ float cellOccupancy(ivec3 cell, ivec3 offset)
     return occupied / float(uCellSize * uCellSize * uCellSize);
 }
 
-void main()
+float gChange = 0.0; // this invocation's part of the change sums (CHANGE_SUMS)
+float gTotal = 0.0;
+
+void storeGathered(ivec3 cell, bool front, vec4 gathered)
 {
-    ivec3 cell;
-    if (!occupiedCell(cell))
-        return;
+#ifdef CHANGE_SUMS
+    vec3 before = uFirstGather ? vec3(0.0) : max((front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell)).rgb, vec3(0.0));
+    gChange += dot(abs(gathered.rgb - before), vec3(1.0));
+    gTotal += dot(gathered.rgb, vec3(1.0));
+#endif
+    if (front)
+        imageStore(uIrradiance, cell, gathered);
+    else
+        imageStore(uIrradianceBack, cell, gathered);
+}
+
+void gatherCell(ivec3 cell)
+{
     vec3 normalSum = vec3(0.0);
     vec3 positionSum = vec3(0.0);
     float occupied = 0.0;
+#ifdef CACHED_GEOMETRY
+    vec4 geometry = texelFetch(uCellGeometry, cell, 0);
+    if (geometry.w <= 0.0) {
+        imageStore(uIrradiance, cell, kNone);
+        imageStore(uIrradianceBack, cell, kNone);
+        return;
+    }
+    for (int z = 0; z < uCellSize; ++z)
+        for (int y = 0; y < uCellSize; ++y)
+            for (int x = 0; x < uCellSize; ++x) {
+                ivec3 voxel = cell * uCellSize + ivec3(x, y, z);
+                float occupancy = texelFetch(uAlbedo, voxel, 0).a > 0.0 ? 1.0 : 0.0;
+                positionSum += occupancy * (vec3(voxel) + 0.5);
+                occupied += occupancy;
+            }
+    vec3 centre = uGridOrigin + positionSum / occupied * uVoxelSize;
+    bool twoSided = geometry.w > 0.75;
+    vec3 n = normalize(geometry.xyz);
+#else
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x) {
@@ -86,7 +140,12 @@ void main()
         }
     }
     imageStore(uCellNormal, cell, vec4(n, twoSided ? 1.0 : 0.5));
-    imageStore(uIrradianceBack, cell, kNone);
+    // Gather along the normal as stored (8-bit snorm), as later gathers that read it back will: a solve must
+    // not depend on which of its gathers came first.
+    n = normalize(round(clamp(n, -1.0, 1.0) * 127.0) / 127.0);
+#endif
+    if (!twoSided) // (a two-sided cell's back face is read first for its change: CHANGE_SUMS)
+        imageStore(uIrradianceBack, cell, kNone);
     // The gather appears once, in a loop over the sides: llvmpipe runs all code of a shader in every lane, so
     // three gathers written out (one side, or two) cost every cell the first steps of fifteen cones, and the
     // second pass of this loop runs only where a lane has a second side. uOne keeps the compiler from
@@ -94,10 +153,16 @@ void main()
     int sides = (twoSided ? 2 : 1) * uOne;
     for (int side = 0; side < sides; ++side) {
         vec3 direction = side == 0 ? n : -n;
-        vec4 gathered = gatherDiffuse(centre + direction * uConeOffset, direction);
-        if (side == 0)
-            imageStore(uIrradiance, cell, gathered);
-        else
-            imageStore(uIrradianceBack, cell, gathered);
+        storeGathered(cell, side == 0, gatherDiffuse(centre + direction * uConeOffset, direction));
     }
+}
+
+void main()
+{
+    ivec3 cell;
+    if (occupiedCell(cell))
+        gatherCell(cell);
+#ifdef CHANGE_SUMS
+    addGroupSums(gChange, gTotal, BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_CELL_CHANGE);
+#endif
 }

@@ -392,7 +392,9 @@ void RenderPlanTest::bouncesConvergeAcrossFrames()
         QCOMPARE(m_last.bounceIterations, frames + 1);
         ++frames;
     }
-    QVERIFY2(m_last.lightConverged && frames >= 2, qPrintable(QString("%1 frames").arg(frames)));
+    // One iteration a frame: at least one frame shows the light still converging (from the second iteration
+    // on the solve may end by extrapolating its geometric tail).
+    QVERIFY2(m_last.lightConverged && frames >= 1, qPrintable(QString("%1 frames").arg(frames)));
     planned();
     expectAction("bounces", "reused");
 

@@ -1,0 +1,55 @@
+// Between the gather and the reinjection of one bounce iteration (passes/VoxelBouncePass), on the GPU so that
+// no readback stalls the iteration: whether this reinjection should add the geometric tail.
+// From one iteration to the next the change shrinks by about the same ratio q (the scene's mean albedo times
+// what a gather captures), so the changes still to come sum to the last one times q / (1 - q), the tail. The
+// ratio is this gather's change over the last one's; its drift since the ratio before bounds how wrong the tail
+// is, so the earliest iteration that can add it is the third. (A first ratio taken from the first bounce over
+// the first-bounce light itself would allow the second, but there the change still holds light that shrinks at
+// other rates in different places: the reference Cornell box with a point light then read 2% off its limit in
+// a tenth of its pixels, and both it and the atrium moved further from their path-traced references.)
+#include "bounce/BounceSums.glsl"
+
+layout(local_size_x = 1) in;
+
+layout(r32f, binding = 1) uniform image2D uSums;
+uniform int uIteration; // this iteration's index in the solve, from 0
+uniform float uTolerance;
+uniform float uLargestRatio; // above this the solve is too slow for its tail to be trusted
+
+float sum(int iteration, int which)
+{
+    return imageLoad(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * iteration + which, 0)).r;
+}
+
+float tailOf(float change, float before)
+{
+    if (before <= 0.0)
+        return -1.0;
+    float q = change / before;
+    return q > 0.0 && q < uLargestRatio ? q / (1.0 - q) : -1.0;
+}
+
+void main()
+{
+    int k = uIteration;
+    float tail = -1.0, previousTail = -1.0;
+    if (k >= 1)
+        tail = tailOf(sum(k, BOUNCE_SUM_CELL_CHANGE), sum(k - 1, BOUNCE_SUM_CELL_CHANGE));
+    if (k >= 2)
+        previousTail = tailOf(sum(k - 1, BOUNCE_SUM_CELL_CHANGE), sum(k - 2, BOUNCE_SUM_CELL_CHANGE));
+    // Once per solve: iterating on from an extrapolated iterate corrects what the extrapolation got wrong.
+    bool allowed = true;
+    for (int i = 0; i < k; ++i)
+        allowed = allowed && sum(i, BOUNCE_SUM_TAIL) <= 0.0;
+    float error = -1.0;
+    bool extrapolate = false;
+    if (allowed && tail > 0.0 && previousTail > 0.0 && sum(k - 1, BOUNCE_SUM_VOXEL_TOTAL) > 0.0) {
+        // This iteration's relative change of the voxels, from the last one's and the ratio.
+        float change = sum(k - 1, BOUNCE_SUM_VOXEL_CHANGE) / sum(k - 1, BOUNCE_SUM_VOXEL_TOTAL)
+            * sum(k, BOUNCE_SUM_CELL_CHANGE) / sum(k - 1, BOUNCE_SUM_CELL_CHANGE);
+        error = change * abs(tail - previousTail);
+        extrapolate = error < uTolerance;
+    }
+    imageStore(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * k + BOUNCE_SUM_TAIL, 0), vec4(extrapolate ? tail : 0.0));
+    imageStore(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * k + BOUNCE_SUM_TAIL_ERROR, 0), vec4(error));
+}
