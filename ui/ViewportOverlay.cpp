@@ -1,7 +1,8 @@
 #include "ViewportOverlay.h"
 
+#include "ViewProjection.h"
+
 #include "document/Document.h"
-#include "scene/CameraBasis.h"
 
 #include <glm/geometric.hpp>
 
@@ -86,22 +87,9 @@ void ViewportOverlay::showFrame(const render::FrameStats& stats, bool interactiv
 
 std::optional<QPointF> ViewportOverlay::project(const glm::vec3& world) const
 {
-    if (!m_document || m_image.isEmpty())
+    if (!m_document)
         return std::nullopt;
-    const render::Camera& camera = m_document->state().camera;
-    const render::CameraBasis basis = render::CameraBasis::of(camera);
-    const glm::vec3 offset = world - camera.position;
-    const float depth = glm::dot(offset, basis.forward);
-    if (!(depth > 0.0f))
-        return std::nullopt;
-    // CameraBasis::through() backwards: view depth 1 spans tanHalfFovY up and that times the aspect across.
-    const float aspect = float(m_image.width()) / float(m_image.height());
-    const float x = glm::dot(offset, basis.right) / (depth * basis.tanHalfFovY * aspect);
-    const float y = glm::dot(offset, basis.up) / (depth * basis.tanHalfFovY);
-    if (!std::isfinite(x) || !std::isfinite(y))
-        return std::nullopt;
-    return QPointF(
-        m_image.x() + (0.5 * x + 0.5) * m_image.width(), m_image.y() + (0.5 - 0.5 * y) * m_image.height());
+    return ViewProjection { m_document->state().camera, QRectF(m_image) }.toScreen(world);
 }
 
 QList<QPointF> ViewportOverlay::lightIconPositions() const
@@ -158,6 +146,13 @@ QList<QLineF> ViewportOverlay::selectionEdges() const
     return edges;
 }
 
+void ViewportOverlay::setGizmo(const TransformGizmo& gizmo, int highlighted)
+{
+    m_gizmo = gizmo;
+    m_gizmoHighlight = highlighted;
+    update();
+}
+
 void ViewportOverlay::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
@@ -199,6 +194,20 @@ void ViewportOverlay::paintEvent(QPaintEvent*)
                     painter.drawLine(centre, centre + along);
                 }
             }
+        }
+    }
+
+    // The gizmo on top of the icons, each handle outlined in black so it reads on any image.
+    for (const TransformGizmo::Handle& handle : m_gizmo.handles()) {
+        const bool lit = handle.part == m_gizmoHighlight;
+        const QColor colour = lit ? handle.colour.lighter(140) : handle.colour;
+        for (const auto& [pen, width] :
+            { std::pair { QColor(0, 0, 0, 160), lit ? 5.0 : 4.0 }, std::pair { colour, lit ? 3.0 : 2.0 } }) {
+            painter.setPen(QPen(pen, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            if (handle.closed)
+                painter.drawPolygon(handle.shape);
+            else
+                painter.drawPolyline(handle.shape);
         }
     }
 

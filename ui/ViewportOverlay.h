@@ -1,5 +1,7 @@
 #pragma once
 
+#include "TransformGizmo.h"
+
 #include "core/FrameStats.h"
 #include "scene/Camera.h"
 
@@ -45,6 +47,11 @@ public:
     QList<QPolygonF> surfaceLightOutlines() const;
     /** The edges of the selected node's box that lie in front of the camera; empty without a selection. */
     QList<QLineF> selectionEdges() const;
+    /** The rectangle (widget pixels) the last frame was drawn into, which the projection maps to. */
+    QRect imageRect() const { return m_image; }
+    /** The transform gizmo to draw, with part @p highlighted (under the cursor or being dragged) brighter. */
+    void setGizmo(const TransformGizmo& gizmo, int highlighted);
+    const TransformGizmo& gizmo() const { return m_gizmo; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -57,6 +64,8 @@ private:
     QRect m_image;
     QString m_status;
     QString m_busy;
+    TransformGizmo m_gizmo;
+    int m_gizmoHighlight = -1;
 };
 
 } // namespace vct::ui

@@ -44,6 +44,7 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
     , m_sync(std::make_unique<sync::SceneSync>(document))
     , m_nonFiniteOverlay(new NonFiniteOverlay(this))
     , m_overlay(new ViewportOverlay(this, document))
+    , m_gizmo(document)
 {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
@@ -54,7 +55,12 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
         m_interactive = false;
         update();
     });
-    connect(document, &doc::Document::selectionChanged, m_overlay, qOverload<>(&QWidget::update));
+    connect(document, &doc::Document::selectionChanged, this, [this](int node) {
+        // A node chosen after a light takes the gizmo; the light does not come back when it is deselected.
+        if (node >= 0)
+            m_gizmo.setSelectedLight(-1);
+        refreshGizmo();
+    });
     m_flyTimer.setInterval(30);
     connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
     m_wheelGestureTimer.setSingleShot(true);
@@ -172,6 +178,7 @@ void ViewportWidget::paintGL()
         emit frameRendered(stats);
         m_overlay->showFrame(
             stats, m_interactive, m_inspector.enabled ? QRect(0, 0, width() / 2, height()) : rect());
+        refreshGizmo();
         if (!stats.lightConverged)
             QTimer::singleShot(0, this, [this] { update(); });
     } catch (const std::exception& e) {
@@ -357,6 +364,13 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
 {
     m_lastMouse = event->position().toPoint();
     m_pressPosition = m_lastMouse;
+    if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ControlModifier)
+        && m_gizmo.press(viewProjection(), event->position())) {
+        m_dragButton = Qt::LeftButton;
+        refreshGizmo();
+        setFocus();
+        return;
+    }
     m_dragButton = event->button();
     m_movingNode = event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier)
         && m_document->selectedNode() >= 0;
@@ -364,6 +378,8 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event)
     m_pivot.reset();
     if (!m_movingNode)
         beginGesture();
+    if (m_dragButton == Qt::RightButton)
+        startFlying();
     setFocus();
 }
 
@@ -373,7 +389,18 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     const QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
     const render::Camera& camera = m_document->state().camera;
+    if (m_gizmo.dragging()) {
+        m_gizmo.drag(event->position());
+        startInteraction();
+        refreshGizmo();
+        return;
+    }
     if (m_dragButton == Qt::NoButton) {
+        if (const int part = m_gizmo.gizmo(viewProjection()).partAt(event->position());
+            part != m_gizmoHover) {
+            m_gizmoHover = part;
+            refreshGizmo();
+        }
         if (m_inspector.enabled)
             hoverVoxel(position);
         return;
@@ -413,7 +440,12 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     if (pan)
         setCamera(CameraController::pan(camera, -float(delta.x()) / float(std::max(1, height())),
             float(delta.y()) / float(std::max(1, height()))));
-    else if (m_dragButton == Qt::LeftButton || m_dragButton == Qt::RightButton) {
+    else if (m_dragButton == Qt::RightButton) {
+        // Looking around, as in Godot and Unity: the camera turns where it stands (and flies with
+        // W/A/S/D/Q/E).
+        setCamera(CameraController::orbitAbout(camera, camera.position,
+            float(delta.x()) * kOrbitDegreesPerPixel, float(delta.y()) * kOrbitDegreesPerPixel));
+    } else if (m_dragButton == Qt::LeftButton) {
         // Picked where the button went down: only a Shift pan earlier in this drag can have moved the view
         // since.
         if (!m_pivot)
@@ -425,6 +457,18 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_gizmo.dragging()) {
+        m_gizmo.release();
+        m_dragButton = Qt::NoButton;
+        refreshGizmo();
+        return;
+    }
+    if (event->button() == Qt::RightButton) {
+        // Letting go of the right button ends the flight; the keys fly again only with the button down.
+        for (const int key : { Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E })
+            m_flyKeys.remove(key);
+        m_flyTimer.stop();
+    }
     const bool click = (event->position().toPoint() - m_pressPosition).manhattanLength() < 4;
     if (click && event->button() == Qt::LeftButton && !m_movingNode) {
         glm::vec3 origin, direction;
@@ -454,9 +498,15 @@ QList<std::pair<QString, QString>> ViewportWidget::inputBindings()
     // Kept beside keyPressEvent and the mouse handlers: a key added there belongs here too, unless an action
     // of the main window has it as well (F is View > Frame selection, listed with the actions).
     return {
-        { tr("W / S"), tr("Fly forward / back (held)") },
-        { tr("A / D"), tr("Fly left / right (held)") },
-        { tr("Q / E"), tr("Fly down / up (held)") },
+        { tr("W / E / R"),
+            tr("Handles to move / rotate / scale the selection (or the light chosen in the "
+               "Scene panel)") },
+        { tr("Q"), tr("No handles") },
+        { tr("Drag a handle"), tr("Move, rotate or scale along its axis; Esc while dragging puts it back") },
+        { tr("Right drag"), tr("Look around") },
+        { tr("W / S with the right button held"), tr("Fly forward / back") },
+        { tr("A / D with the right button held"), tr("Fly left / right") },
+        { tr("Q / E with the right button held"), tr("Fly down / up") },
         { tr("Left drag"), tr("Orbit about the point under the cursor") },
         { tr("Middle drag, Shift+drag"), tr("Pan") },
         { tr("Wheel"), tr("Zoom") },
@@ -478,25 +528,41 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
         if (!event->isAutoRepeat())
             m_flyKeys.insert(event->key()); // axis constraint for Ctrl+drag; no flying
         return;
+    case Qt::Key_Escape:
+        if (m_gizmo.dragging()) {
+            m_gizmo.cancel();
+            m_dragButton = Qt::NoButton;
+            refreshGizmo();
+            return;
+        }
+        QOpenGLWidget::keyPressEvent(event);
+        return;
     case Qt::Key_W:
     case Qt::Key_A:
     case Qt::Key_S:
     case Qt::Key_D:
     case Qt::Key_Q:
     case Qt::Key_E:
-        if (!event->isAutoRepeat()) {
-            m_flyKeys.insert(event->key());
-            if (!m_flyTimer.isActive()) {
-                beginGesture();
-                // A quarter of the geometry's diagonal per second: the room is crossed in a few seconds
-                // whatever its unit. Measured once per flight, not per step (the bounds read every vertex).
-                const render::Aabb bounds = m_document->sceneBounds();
-                const float diagonal = bounds.isEmpty() ? 0.0f : glm::length(bounds.size());
-                m_flySpeed = 0.25f * (diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f);
-                m_flyClock.start();
-                m_flyTimer.start();
+    case Qt::Key_R:
+        // With the right button down the keys fly, as in Godot and Unity; without it W, E and R choose the
+        // gizmo (Q none).
+        if (event->isAutoRepeat())
+            return;
+        if (m_dragButton == Qt::RightButton) {
+            if (event->key() != Qt::Key_R) {
+                m_flyKeys.insert(event->key());
+                startFlying();
             }
+            return;
         }
+        if (event->key() == Qt::Key_W)
+            setGizmoMode(GizmoMode::Move);
+        else if (event->key() == Qt::Key_E)
+            setGizmoMode(GizmoMode::Rotate);
+        else if (event->key() == Qt::Key_R)
+            setGizmoMode(GizmoMode::Scale);
+        else if (event->key() == Qt::Key_Q)
+            setGizmoMode(GizmoMode::None);
         return;
     default:
         QOpenGLWidget::keyPressEvent(event);
@@ -538,6 +604,48 @@ void ViewportWidget::resizeEvent(QResizeEvent* event)
 {
     QOpenGLWidget::resizeEvent(event);
     m_overlay->setGeometry(rect());
+}
+
+void ViewportWidget::startFlying()
+{
+    bool flyKey = false;
+    for (const int key : { Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E })
+        flyKey = flyKey || m_flyKeys.contains(key);
+    if (!flyKey || m_flyTimer.isActive())
+        return;
+    beginGesture();
+    // A quarter of the geometry's diagonal per second: the room is crossed in a few seconds whatever its
+    // unit. Measured once per flight, not per step (the bounds read every vertex).
+    const render::Aabb bounds = m_document->sceneBounds();
+    const float diagonal = bounds.isEmpty() ? 0.0f : glm::length(bounds.size());
+    m_flySpeed = 0.25f * (diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f);
+    m_flyClock.start();
+    m_flyTimer.start();
+}
+
+void ViewportWidget::setGizmoMode(GizmoMode mode)
+{
+    if (m_gizmo.dragging())
+        return;
+    m_gizmo.setMode(mode);
+    refreshGizmo();
+}
+
+void ViewportWidget::setSelectedLight(int light)
+{
+    m_gizmo.setSelectedLight(light);
+    refreshGizmo();
+}
+
+ViewProjection ViewportWidget::viewProjection() const
+{
+    return { m_document->state().camera, QRectF(m_overlay->imageRect()) };
+}
+
+void ViewportWidget::refreshGizmo()
+{
+    const TransformGizmo gizmo = m_gizmo.gizmo(viewProjection());
+    m_overlay->setGizmo(gizmo, m_gizmo.dragging() ? m_gizmo.activePart() : m_gizmoHover);
 }
 
 void ViewportWidget::flyStep()

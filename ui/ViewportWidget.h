@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CameraHistory.h"
+#include "GizmoController.h"
 #include "InspectorSettings.h"
 
 #include "core/FrameStats.h"
@@ -72,6 +73,9 @@ public:
     const NonFiniteOverlay* nonFiniteOverlay() const { return m_nonFiniteOverlay; }
     /** Selection box, light icons and the last frame's figures, over the image. */
     const ViewportOverlay* overlay() const { return m_overlay; }
+    /** The handles shown for the selection: W move, E rotate, R scale, Q none (keys over the view). */
+    GizmoMode gizmoMode() const { return m_gizmo.mode(); }
+    void setGizmoMode(GizmoMode mode);
     /**
      * The keys and mouse gestures the view handles itself rather than through a QAction, as (keys, what they
      * do): Help > Keyboard shortcuts lists them beside the actions' shortcuts.
@@ -96,6 +100,8 @@ public slots:
     void goToBookmark(int index);
     /** Back to the camera before the last completed orbit, pan, zoom, fly, frame or reset. */
     void undoView();
+    /** The light the gizmo takes while no node is selected (the scene tree's current light), or -1. */
+    void setSelectedLight(int light);
 
 signals:
     void frameRendered(const vct::render::FrameStats& stats);
@@ -142,6 +148,12 @@ private:
         const QPoint& position, glm::vec3& origin, glm::vec3& direction, bool inspectorHalf) const;
     QRect traceRect() const;
     QRect inspectorRect() const;
+    /** How world points map to the image the overlay draws on, for the gizmo. */
+    ViewProjection viewProjection() const;
+    /** Hands the overlay the gizmo as the selection, camera and mode now place it. */
+    void refreshGizmo();
+    /** Starts flying if a fly key is held while the right button looks around. */
+    void startFlying();
 
     doc::Document* m_document;
     std::unique_ptr<render::Renderer> m_renderer;
@@ -176,6 +188,8 @@ private:
     bool m_nonFiniteCheck = false;
     NonFiniteOverlay* m_nonFiniteOverlay;
     ViewportOverlay* m_overlay;
+    GizmoController m_gizmo;
+    int m_gizmoHover = -1; ///< the gizmo part under the cursor, -1 for none
 };
 
 } // namespace vct::ui

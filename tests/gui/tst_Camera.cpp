@@ -129,11 +129,7 @@ void CameraTest::drag(Qt::MouseButton button, const QPoint& from, const QPoint& 
 
 int CameraTest::nodeNamed(const QString& prefix) const
 {
-    const auto& nodes = m_window->document()->state().nodes;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        if (nodes[i].name.startsWith(prefix))
-            return int(i);
-    return -1;
+    return test::nodeNamed(*m_window->document(), prefix);
 }
 
 render::Aabb CameraTest::nodeBounds(int node) const

@@ -204,8 +204,8 @@ void PapercutsTest::shortcutsDialogListsEveryActionShortcut()
             qPrintable(shortcut));
     }
     QVERIFY(withShortcut >= 10);
-    for (const char* expected :
-        { "Ctrl+S", "Ctrl+I", "F", "Shift+F", "Home", "Alt+Z", "F2", "W / S", "Q / E" })
+    for (const char* expected : { "Ctrl+S", "Ctrl+I", "F", "Shift+F", "Home", "Alt+Z", "F2", "W / E / R",
+             "Right drag", "W / S with the right button held" })
         QVERIFY2(keys.contains(QLatin1String(expected)), expected);
     const auto rows = dialog->table()->findItems(QStringLiteral("Frame all"), Qt::MatchExactly);
     QCOMPARE(rows.size(), qsizetype(1));

@@ -87,20 +87,12 @@ QDoubleSpinBox* TransformTest::spin(const char* name) const
 
 render::FrameStats TransformTest::nextFrame()
 {
-    QSignalSpy spy(m_window->viewport(), &ui::ViewportWidget::frameRendered);
-    m_window->viewport()->update();
-    if (!spy.wait(20000))
-        return {};
-    return spy.first().first().value<render::FrameStats>();
+    return test::nextFrame(*m_window);
 }
 
 int TransformTest::shortBox() const
 {
-    const auto& nodes = m_window->document()->state().nodes;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        if (nodes[i].name.startsWith(QStringLiteral("shortbox")))
-            return int(i);
-    return -1;
+    return test::nodeNamed(*m_window->document(), QStringLiteral("shortbox"));
 }
 
 void TransformTest::initTestCase()

@@ -1,8 +1,11 @@
 #pragma once
 
+#include "core/FrameStats.h"
 #include "document/Document.h"
 #include "ui/MainWindow.h"
+#include "ui/ViewportWidget.h"
 
+#include <QSignalSpy>
 #include <QSize>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -48,6 +51,26 @@ inline std::unique_ptr<ui::MainWindow> showEditor(const QString& scene, QSize si
     if (!QTest::qWaitForWindowExposed(window.get()))
         return nullptr;
     return window;
+}
+
+/** The stats of the next frame the viewport of @p window renders, or empty stats if none comes in 20 s. */
+inline render::FrameStats nextFrame(ui::MainWindow& window)
+{
+    QSignalSpy spy(window.viewport(), &ui::ViewportWidget::frameRendered);
+    window.viewport()->update();
+    if (!spy.wait(20000))
+        return {};
+    return spy.first().first().value<render::FrameStats>();
+}
+
+/** The first node whose name starts with @p prefix, or -1. */
+inline int nodeNamed(const doc::Document& document, const QString& prefix)
+{
+    const auto& nodes = document.state().nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i].name.startsWith(prefix))
+            return int(i);
+    return -1;
 }
 
 } // namespace vct::test
