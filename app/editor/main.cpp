@@ -60,7 +60,9 @@ int main(int argc, char** argv)
     const QCommandLineOption upAxisOption(QStringLiteral("up-axis"),
         QStringLiteral("The axis that points up in a model file: y (default) or z (CAD tools, 3ds Max)."),
         QStringLiteral("AXIS"));
-    parser.addOptions({ screenshot, inspect, unitScaleOption, upAxisOption, sceneRootOption });
+    const QCommandLineOption sizeOption(QStringLiteral("size"),
+        QStringLiteral("The window's size in pixels, as WIDTHxHEIGHT (for screenshots)."), QStringLiteral("WxH"));
+    parser.addOptions({ screenshot, inspect, unitScaleOption, upAxisOption, sceneRootOption, sizeOption });
     parser.process(app);
 
     const QStringList scenes = parser.positionalArguments();
@@ -97,19 +99,35 @@ int main(int argc, char** argv)
                             rootFromOption ? QStringLiteral("--scene-root")
                                            : QLatin1String(vct::doc::ProjectFile::kModelRootVariable)));
 
+    QSize windowSize;
+    if (parser.isSet(sizeOption)) {
+        const QStringList parts = parser.value(sizeOption).split(QLatin1Char('x'));
+        bool okWidth = false, okHeight = false;
+        if (parts.size() == 2)
+            windowSize = QSize(parts[0].toInt(&okWidth), parts[1].toInt(&okHeight));
+        if (!okWidth || !okHeight || windowSize.width() < 320 || windowSize.height() < 240
+            || windowSize.width() > 8192 || windowSize.height() > 8192)
+            return fail(QStringLiteral("--size: '%1' is not WIDTHxHEIGHT between 320x240 and 8192x8192")
+                            .arg(parser.value(sizeOption)));
+    }
+
     vct::ui::MainWindow window;
     window.document()->setModelRoot(sceneRoot);
     window.openInitial(scene, unitScale, upAxis);
     if (parser.isSet(inspect))
         window.inspectorDock()->setSettings(
             { true, parser.value(inspect).toInt(), vct::render::VoxelChannel::Radiance });
+    if (windowSize.isValid())
+        window.resize(windowSize);
     window.show();
     if (parser.isSet(screenshot)) {
         const QString path = parser.value(screenshot);
-        QObject::connect(
-            window.viewport(), &vct::ui::ViewportWidget::frameRendered, &window, [&window, path] {
-                if (window.viewport()->isInteractive())
+        QObject::connect(window.viewport(), &vct::ui::ViewportWidget::frameRendered, &window,
+            [&window, path, taken = false](const vct::render::FrameStats& stats) mutable {
+                // The picture a user waits for: full resolution, the bounces converged, taken once.
+                if (taken || window.viewport()->isInteractive() || !stats.lightConverged)
                     return;
+                taken = true;
                 // Let the docks show this frame's figures before grabbing.
                 QTimer::singleShot(200, &window, [&window, path] {
                     const bool ok = window.grab().save(path);
