@@ -61,7 +61,8 @@ int main(int argc, char** argv)
         QStringLiteral("The axis that points up in a model file: y (default) or z (CAD tools, 3ds Max)."),
         QStringLiteral("AXIS"));
     const QCommandLineOption sizeOption(QStringLiteral("size"),
-        QStringLiteral("The window's size in pixels, as WIDTHxHEIGHT (for screenshots)."), QStringLiteral("WxH"));
+        QStringLiteral("The window's size in pixels, as WIDTHxHEIGHT (for screenshots)."),
+        QStringLiteral("WxH"));
     parser.addOptions({ screenshot, inspect, unitScaleOption, upAxisOption, sceneRootOption, sizeOption });
     parser.process(app);
 
