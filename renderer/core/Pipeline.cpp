@@ -65,8 +65,11 @@ FrameStats Pipeline::execute(FrameContext& frame)
             pass.execute(frame);
             timers[i].end();
             ran[i] = true;
+        } else if (decision.action == PassDecision::Action::Reuse) {
+            entry.action = "reused";
         } else {
-            entry.action = decision.action == PassDecision::Action::Reuse ? "reused" : "skipped";
+            entry.action = "skipped";
+            pass.release(frame);
         }
         stats.passes.push_back(entry);
     }

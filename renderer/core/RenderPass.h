@@ -40,9 +40,17 @@ public:
     virtual ~RenderPass() = default;
     virtual const char* name() const = 0;
     virtual PassDeclaration declare() const = 0;
-    /** Decides run, reuse (last output still valid) or skip (effect not needed), with the reason. */
-    virtual PassDecision plan(const FrameContext& frame) = 0;
+    /**
+     * Decides run, reuse (last output still valid) or skip (effect not needed), with the reason. Changes
+     * nothing: what a skipped pass frees, it frees in release().
+     */
+    virtual PassDecision plan(const FrameContext& frame) const = 0;
     virtual void execute(FrameContext& frame) = 0;
+    /**
+     * Called instead of execute() when plan() skips the pass: frees what it made for an effect the frame no
+     * longer needs (textures, cached state), so that switching an effect off gives its memory back.
+     */
+    virtual void release(FrameContext& frame) { (void)frame; }
     /** Forgets cached state so the next plan() runs the pass (after GPU resources were recreated). */
     virtual void invalidate() = 0;
 };

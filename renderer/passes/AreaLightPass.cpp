@@ -7,7 +7,7 @@
 
 namespace vct::render {
 
-PassDecision AreaLightPass::plan(const FrameContext& frame)
+PassDecision AreaLightPass::plan(const FrameContext& frame) const
 {
     const int lights = frame.shape.areaLights;
     if (lights == 0)

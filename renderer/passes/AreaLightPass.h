@@ -21,7 +21,7 @@ public:
     {
         return { { Resource::GBuffer, Resource::VoxelMaterials }, { Resource::IndirectLight } };
     }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { }
 

@@ -24,7 +24,10 @@ public:
         return { { Resource::GBuffer, Resource::IndirectLight, Resource::ShadowMaps },
             { Resource::FinalImage } };
     }
-    PassDecision plan(const FrameContext&) override { return { PassDecision::Action::Run, "per-frame" }; }
+    PassDecision plan(const FrameContext&) const override
+    {
+        return { PassDecision::Action::Run, "per-frame" };
+    }
     void execute(FrameContext& frame) override;
     void invalidate() override { }
 

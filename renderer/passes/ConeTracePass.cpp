@@ -15,7 +15,7 @@
 
 namespace vct::render {
 
-PassDecision ConeTracePass::plan(const FrameContext& frame)
+PassDecision ConeTracePass::plan(const FrameContext& frame) const
 {
     const bool diffuse = frame.shape.diffuseCones;
     const bool specular = frame.shape.specularCones;

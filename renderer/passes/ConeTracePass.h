@@ -23,7 +23,7 @@ public:
         return { { Resource::GBuffer, Resource::VoxelMips, Resource::VoxelIrradiance },
             { Resource::IndirectLight } };
     }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { }
 

@@ -10,7 +10,10 @@ class GBufferPass final : public RenderPass {
 public:
     const char* name() const override { return "g-buffer"; }
     PassDeclaration declare() const override { return { {}, { Resource::GBuffer } }; }
-    PassDecision plan(const FrameContext&) override { return { PassDecision::Action::Run, "per-frame" }; }
+    PassDecision plan(const FrameContext&) const override
+    {
+        return { PassDecision::Action::Run, "per-frame" };
+    }
     void execute(FrameContext& frame) override;
     void invalidate() override { }
 

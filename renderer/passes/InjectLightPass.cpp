@@ -82,7 +82,7 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
         .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
 }
 
-PassDecision InjectLightPass::plan(const FrameContext& frame)
+PassDecision InjectLightPass::plan(const FrameContext& frame) const
 {
     if (keyOf(frame) == m_key)
         return { PassDecision::Action::Reuse, "voxels, lights and shadows unchanged" };

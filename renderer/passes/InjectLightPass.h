@@ -25,7 +25,7 @@ public:
     {
         return { { Resource::VoxelMaterials, Resource::ShadowMaps }, { Resource::VoxelRadiance } };
     }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_key = {}; }
 

@@ -21,7 +21,7 @@ void setLevelCount(gl::Texture& texture, int levels)
 
 } // namespace
 
-PassDecision MipmapPass::plan(const FrameContext& frame)
+PassDecision MipmapPass::plan(const FrameContext& frame) const
 {
     if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic
         && frame.shape.bounceVolume == m_levelZeroOnly)

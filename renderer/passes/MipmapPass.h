@@ -20,7 +20,7 @@ public:
     {
         return { { Resource::VoxelRadiance }, { Resource::VoxelMips } };
     }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
 

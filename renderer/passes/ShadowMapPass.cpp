@@ -31,7 +31,7 @@ ShadowMapPass::MapsKey ShadowMapPass::keyOf(const FrameContext& frame)
         frame.settings.shadowMapSize };
 }
 
-PassDecision ShadowMapPass::plan(const FrameContext& frame)
+PassDecision ShadowMapPass::plan(const FrameContext& frame) const
 {
     if (!anyShadowCaster(frame.scene.scene()))
         return { PassDecision::Action::Skip, "no shadow-casting light" };

@@ -17,7 +17,7 @@ class ShadowMapPass final : public RenderPass {
 public:
     const char* name() const override { return "shadow maps"; }
     PassDeclaration declare() const override { return { {}, { Resource::ShadowMaps } }; }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override
     {

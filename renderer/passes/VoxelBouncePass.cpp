@@ -26,19 +26,12 @@ int VoxelBouncePass::iterationLimit(const FrameContext& frame)
     return bounces == RenderSettings::kConvergedBounces ? RenderSettings::kMaxBounces : bounces - 1;
 }
 
-PassDecision VoxelBouncePass::plan(const FrameContext& frame)
+PassDecision VoxelBouncePass::plan(const FrameContext& frame) const
 {
-    VoxelVolume& v = frame.voxels;
-    if (!frame.shape.bounceVolume) {
-        // Cones must go back to the first-bounce volume; the memory is not needed either.
-        for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance,
-                 &v.bounceIrradianceBack, &v.bounceCellNormal })
-            *t = gl::Texture();
-        v.bounceProgress = {};
-        m_radianceVersion = 0;
+    const VoxelVolume& v = frame.voxels;
+    if (!frame.shape.bounceVolume)
         return { PassDecision::Action::Skip,
             frame.settings.bounces == 1 ? "one bounce: the per-pixel cones gather it" : "no light" };
-    }
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
     char text[160];
     if (sameSolve && m_done) {
@@ -53,6 +46,17 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame)
     }
     return { PassDecision::Action::Run,
         v.bounced ? "first-bounce radiance or a bounce setting changed" : "no valid output yet" };
+}
+
+void VoxelBouncePass::release(FrameContext& frame)
+{
+    // Cones must go back to the first-bounce volume; the memory is not needed either.
+    VoxelVolume& v = frame.voxels;
+    for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance, &v.bounceIrradianceBack,
+             &v.bounceCellNormal })
+        *t = gl::Texture();
+    v.bounceProgress = {};
+    m_radianceVersion = 0;
 }
 
 void VoxelBouncePass::allocate(VoxelVolume& v, int cells, int levels)

@@ -36,8 +36,9 @@ public:
     {
         return { { Resource::VoxelMaterials, Resource::VoxelMips }, { Resource::VoxelMips } };
     }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
+    void release(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
 
 private:

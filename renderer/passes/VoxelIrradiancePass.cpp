@@ -19,19 +19,13 @@ VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& fra
         frame.screen.indirectDivisor, frame.versions.staticGeometry, frame.versions.dynamicGeometry };
 }
 
-PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
+PassDecision VoxelIrradiancePass::plan(const FrameContext& frame) const
 {
-    VoxelVolume& v = frame.voxels;
-    if (!frame.shape.irradianceCache) {
-        v.irradiance = gl::Texture(); // the cone pass traces per pixel; the memory is not needed either
-        v.irradianceBack = gl::Texture();
-        v.irradianceNormal = gl::Texture();
-        v.irradianceRequested = gl::Texture();
-        m_radianceVersion = 0;
+    const VoxelVolume& v = frame.voxels;
+    if (!frame.shape.irradianceCache)
         return { PassDecision::Action::Skip,
             frame.settings.irradianceCache ? "no diffuse light needed"
                                            : "irradiance cache off: cones per pixel" };
-    }
     const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion
         && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key;
     if (!lightKept)
@@ -41,6 +35,15 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame)
     if (viewOf(frame) == m_view)
         return { PassDecision::Action::Reuse, "voxel light and view unchanged" };
     return { PassDecision::Action::Run, "view changed: gathering only the cells that came into view" };
+}
+
+void VoxelIrradiancePass::release(FrameContext& frame)
+{
+    // The cone pass traces per pixel; the memory is not needed either.
+    VoxelVolume& v = frame.voxels;
+    for (gl::Texture* t : { &v.irradiance, &v.irradianceBack, &v.irradianceNormal, &v.irradianceRequested })
+        *t = gl::Texture();
+    m_radianceVersion = 0;
 }
 
 void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)

@@ -12,7 +12,7 @@ constexpr int kDynamicMargin = 2;
 
 } // namespace
 
-PassDecision VoxelizePass::plan(const FrameContext& frame)
+PassDecision VoxelizePass::plan(const FrameContext& frame) const
 {
     if (m_staticGeometry == 0)
         return { PassDecision::Action::Run, "no valid output yet" };

@@ -20,7 +20,7 @@ class VoxelizePass final : public RenderPass {
 public:
     const char* name() const override { return "voxelize"; }
     PassDeclaration declare() const override { return { {}, { Resource::VoxelMaterials } }; }
-    PassDecision plan(const FrameContext& frame) override;
+    PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_staticGeometry = m_staticMaterials = m_dynamicVersion = 0; }
 
