@@ -1,5 +1,7 @@
 #include "SweepResults.h"
 
+#include "files/CsvRecords.h"
+
 #include <QFile>
 
 #include <algorithm>
@@ -28,45 +30,34 @@ bool SweepResults::parse(const QString& text, QString* error)
 {
     m_points.clear();
     m_skipped = 0;
-    const QStringList lines = text.split(QLatin1Char('\n'));
-    int lineIndex = 0;
-    while (lineIndex < lines.size() && lines[lineIndex].trimmed().isEmpty())
-        ++lineIndex;
-    if (lineIndex == lines.size()) {
+    const std::vector<std::vector<std::string>> records = files::CsvRecords::parse(text.toStdString());
+    if (records.empty()) {
         if (error)
             *error = QStringLiteral("the file is empty");
         return false;
     }
-    QStringList header = splitLine(lines[lineIndex++]);
-    for (QString& name : header)
-        name = name.trimmed().toLower();
-    const auto column = [&](std::initializer_list<const char*> names) {
-        for (const char* name : names)
-            if (const qsizetype index = header.indexOf(QLatin1String(name)); index >= 0)
-                return int(index);
-        return -1;
-    };
-    const int labelColumn = column({ "label" });
-    const int gpuColumn = column({ "gpu_ms" });
-    const int wallColumn = column({ "wall_ms", "time_ms" });
-    const int secondsColumn = column({ "seconds" });
-    const int errorColumn = column({ "rel_mse" });
-    const int kindColumn = column({ "kind" });
+    const std::vector<std::string>& header = records.front();
+    const int labelColumn = files::CsvRecords::column(header, { "label" });
+    const int gpuColumn = files::CsvRecords::column(header, { "gpu_ms" });
+    const int wallColumn = files::CsvRecords::column(header, { "wall_ms", "time_ms" });
+    const int secondsColumn = files::CsvRecords::column(header, { "seconds" });
+    const int errorColumn = files::CsvRecords::column(header, { "rel_mse" });
+    const int kindColumn = files::CsvRecords::column(header, { "kind" });
     if (errorColumn < 0 || (gpuColumn < 0 && wallColumn < 0 && secondsColumn < 0)) {
         if (error)
             *error = QStringLiteral("needs a rel_mse column and a gpu_ms (or wall_ms, or seconds) column");
         return false;
     }
 
-    for (; lineIndex < lines.size(); ++lineIndex) {
-        if (lines[lineIndex].trimmed().isEmpty())
-            continue;
-        const QStringList fields = splitLine(lines[lineIndex]);
+    for (std::size_t row = 1; row < records.size(); ++row) {
+        const std::vector<std::string>& fields = records[row];
         const auto field = [&](int index) {
-            return index >= 0 && index < fields.size() ? fields[index].trimmed() : QString();
+            return index >= 0 && std::size_t(index) < fields.size()
+                ? QString::fromStdString(fields[std::size_t(index)]).trimmed()
+                : QString();
         };
         Point point;
-        point.label = labelColumn >= 0 ? field(labelColumn) : QStringLiteral("row %1").arg(lineIndex);
+        point.label = labelColumn >= 0 ? field(labelColumn) : QStringLiteral("row %1").arg(row);
         point.reference = field(kindColumn).compare(QLatin1String("reference"), Qt::CaseInsensitive) == 0;
         bool timeOk = false, errorOk = false;
         // As vct-bench plots it: GPU ms for the cone tracer, wall-clock ms for the path tracer (which has no
@@ -94,35 +85,6 @@ int SweepResults::count(bool reference) const
 {
     return int(std::count_if(m_points.begin(), m_points.end(),
         [reference](const Point& point) { return point.reference == reference; }));
-}
-
-QStringList SweepResults::splitLine(const QString& line)
-{
-    QStringList fields;
-    QString current;
-    bool quoted = false;
-    for (qsizetype i = 0; i < line.size(); ++i) {
-        const QChar c = line[i];
-        if (quoted) {
-            if (c == QLatin1Char('"') && i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
-                current += c;
-                ++i;
-            } else if (c == QLatin1Char('"')) {
-                quoted = false;
-            } else {
-                current += c;
-            }
-        } else if (c == QLatin1Char('"')) {
-            quoted = true;
-        } else if (c == QLatin1Char(',')) {
-            fields << current;
-            current.clear();
-        } else if (c != QLatin1Char('\r')) {
-            current += c;
-        }
-    }
-    fields << current;
-    return fields;
 }
 
 } // namespace vct::ui

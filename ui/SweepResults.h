@@ -12,7 +12,8 @@ namespace vct::ui {
  * time needs. Columns are found by their header names, so extra columns and any column order are fine:
  * `label`, error in `rel_mse`, optionally `kind` (`vct` or `reference`; rows without it count as VCT), and
  * the time as vct-bench plots it: `gpu_ms` for VCT rows, `wall_ms` for reference rows, each falling back to
- * the other (then `time_ms`, then `seconds`) when empty. Fields may be quoted as in RFC 4180.
+ * the other (then `time_ms`, then `seconds`) when empty. Fields may be quoted as in RFC 4180
+ * (files::CsvRecords, the reader `vct-bench accuracy --merge` uses too).
  */
 class SweepResults {
 public:
@@ -32,9 +33,6 @@ public:
     /** Rows left out: unparsable numbers, or values a log-log chart cannot show (<= 0, NaN, inf). */
     int skippedRows() const { return m_skipped; }
     int count(bool reference) const;
-
-    /** Splits one CSV line into fields, honouring double quotes ("" is a literal quote). */
-    static QStringList splitLine(const QString& line);
 
 private:
     std::vector<Point> m_points;

@@ -1,5 +1,6 @@
 #include "cli/AccuracyCsv.h"
 #include "cli/ReportText.h"
+#include "files/CsvRecords.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,50 +19,6 @@ std::string number(double v)
     char text[64];
     std::snprintf(text, sizeof text, "%.9g", v);
     return text;
-}
-
-/** Splits CSV text into records of fields; quoted fields may hold commas, quotes and line breaks. */
-std::vector<std::vector<std::string>> records(const std::string& text)
-{
-    std::vector<std::vector<std::string>> out;
-    std::vector<std::string> record;
-    std::string field;
-    bool inQuotes = false, fieldStarted = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inQuotes) {
-            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
-                field += '"';
-                ++i;
-            } else if (c == '"') {
-                inQuotes = false;
-            } else {
-                field += c;
-            }
-        } else if (c == '"') {
-            inQuotes = fieldStarted = true;
-        } else if (c == ',') {
-            record.push_back(field);
-            field.clear();
-            fieldStarted = true;
-        } else if (c == '\n' || c == '\r') {
-            if (fieldStarted || !field.empty()) {
-                record.push_back(field);
-                out.push_back(record);
-            }
-            record.clear();
-            field.clear();
-            fieldStarted = false;
-        } else {
-            field += c;
-            fieldStarted = true;
-        }
-    }
-    if (fieldStarted || !field.empty()) {
-        record.push_back(field);
-        out.push_back(record);
-    }
-    return out;
 }
 
 bool readNumber(const std::string& text, double& out)
@@ -176,7 +133,7 @@ bool AccuracyCsv::read(const std::string& text, const std::string& sourceName, s
             *error = sourceName + ": " + message;
         return false;
     };
-    const std::vector<std::vector<std::string>> lines = records(text);
+    const std::vector<std::vector<std::string>> lines = files::CsvRecords::parse(text);
     if (lines.empty())
         return fail("empty file, expected a header line");
     std::map<std::string, std::size_t> position;
