@@ -178,6 +178,7 @@ void MainWindow::buildDocks()
 
     connect(m_sceneDock, &SceneGraphDock::lightSelected, m_lightDock, &LightDock::setCurrentLight);
     connect(m_sceneDock, &SceneGraphDock::lightSelected, m_viewport, &ViewportWidget::setSelectedLight);
+    connect(m_viewport, &ViewportWidget::lightClicked, m_sceneDock, &SceneGraphDock::selectLight);
     connect(m_inspectorDock, &VoxelInspectorDock::settingsChanged, m_viewport, &ViewportWidget::setInspector);
     connect(m_viewport, &ViewportWidget::cubesDrawn, m_inspectorDock, &VoxelInspectorDock::setCubeCount);
     connect(m_viewport, &ViewportWidget::voxelHovered, m_inspectorDock, &VoxelInspectorDock::setHoverText);

@@ -176,6 +176,16 @@ void SceneGraphDock::onDocumentSelection(int node)
         selectNodeInView(node);
 }
 
+void SceneGraphDock::selectLight(int light)
+{
+    const QModelIndex index = m_model->indexForLight(light);
+    if (!index.isValid())
+        return;
+    m_view->selectionModel()->setCurrentIndex(
+        index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    m_view->scrollTo(index);
+}
+
 void SceneGraphDock::selectNodeInView(int node)
 {
     m_syncingSelection = true;

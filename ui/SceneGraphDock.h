@@ -38,6 +38,8 @@ public:
     QAction* deleteAction() const { return m_delete; }
     /** Checkable: checked when the selected node is dynamic. */
     QAction* dynamicAction() const { return m_dynamic; }
+    /** Makes light @p light the current row, as a click on it would (a click on its icon in the view). */
+    void selectLight(int light);
 
 signals:
     /** The user selected a light row (so the main window can show it in the light panel). */

@@ -104,6 +104,27 @@ QList<QPointF> ViewportOverlay::lightIconPositions() const
     return positions;
 }
 
+int ViewportOverlay::lightAt(const QPointF& point, double radius) const
+{
+    if (!m_document)
+        return -1;
+    int nearest = -1;
+    double best = radius;
+    const std::vector<doc::LightNode>& lights = m_document->state().lights;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].type == doc::LightType::Directional)
+            continue;
+        if (const std::optional<QPointF> p = project(lights[i].position)) {
+            const double distance = std::hypot(p->x() - point.x(), p->y() - point.y());
+            if (distance <= best) {
+                best = distance;
+                nearest = int(i);
+            }
+        }
+    }
+    return nearest;
+}
+
 QList<QPolygonF> ViewportOverlay::surfaceLightOutlines() const
 {
     QList<QPolygonF> outlines;

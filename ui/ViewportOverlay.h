@@ -43,6 +43,8 @@ public:
     QString statusText() const { return m_status; }
     /** Where each light in front of the camera gets its icon, widget pixels. */
     QList<QPointF> lightIconPositions() const;
+    /** The light whose icon is nearest @p point within @p radius pixels (suns have none), or -1. */
+    int lightAt(const QPointF& point, double radius = 8.0) const;
     /** The outlines of rect and disk lights in front of the camera. */
     QList<QPolygonF> surfaceLightOutlines() const;
     /** The edges of the selected node's box that lie in front of the camera; empty without a selection. */

@@ -470,7 +470,13 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
         m_flyTimer.stop();
     }
     const bool click = (event->position().toPoint() - m_pressPosition).manhattanLength() < 4;
-    if (click && event->button() == Qt::LeftButton && !m_movingNode) {
+    const int clickedLight = click && event->button() == Qt::LeftButton && !m_movingNode
+        ? m_overlay->lightAt(event->position())
+        : -1;
+    if (clickedLight >= 0) {
+        m_document->setSelectedNode(-1);
+        emit lightClicked(clickedLight);
+    } else if (click && event->button() == Qt::LeftButton && !m_movingNode) {
         glm::vec3 origin, direction;
         const bool inInspector
             = m_inspector.enabled && !rayThrough(event->position().toPoint(), origin, direction, false);
@@ -510,7 +516,7 @@ QList<std::pair<QString, QString>> ViewportWidget::inputBindings()
         { tr("Left drag"), tr("Orbit about the point under the cursor") },
         { tr("Middle drag, Shift+drag"), tr("Pan") },
         { tr("Wheel"), tr("Zoom") },
-        { tr("Click"), tr("Select the object under the cursor") },
+        { tr("Click"), tr("Select the object under the cursor, or the light whose icon it is on") },
         { tr("Ctrl+drag"), tr("Move the selected object") },
         { tr("X / Y / Z held with Ctrl+drag"), tr("Move along that world axis only") },
     };

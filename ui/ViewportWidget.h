@@ -110,6 +110,8 @@ signals:
     void rendererFailed(const QString& message);
     /** Whether undoView() has a camera to go back to. */
     void viewHistoryChanged(bool canUndo);
+    /** A click on light @p light's icon: the Scene panel makes it the current row. */
+    void lightClicked(int light);
 
 protected:
     void initializeGL() override;

@@ -1,5 +1,6 @@
 #include "EditorTestSetup.h"
 #include "TestSupport.h"
+#include "ui/LightDock.h"
 #include "ui/MainWindow.h"
 #include "ui/TransformGizmo.h"
 #include "ui/ViewportOverlay.h"
@@ -325,9 +326,15 @@ void GizmoTest::lightsTakeTheHandlesTheirKindHas()
     doc::Document* document = m_window->document();
     QVERIFY(!document->state().lights.empty());
     QCOMPARE(document->state().lights[0].type, doc::LightType::Point);
-    document->setSelectedNode(-1);
-    viewport->setSelectedLight(0);
+    // A click on the light's icon chooses it, as its row in the Scene panel would.
+    document->setSelectedNode(shortBox());
     viewport->setGizmoMode(ui::GizmoMode::Move);
+    nextFrame();
+    const QList<QPointF> icons = viewport->overlay()->lightIconPositions();
+    QCOMPARE(icons.size(), qsizetype(1));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, icons.front().toPoint());
+    QCOMPARE(document->selectedNode(), -1);
+    QCOMPARE(m_window->lightDock()->currentLight(), 0);
     nextFrame();
     const doc::LightNode original = document->state().lights[0];
     const ui::TransformGizmo::Handle* y = handleOf(shownHandles(), 1);
