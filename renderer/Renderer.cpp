@@ -35,6 +35,7 @@ namespace vct::render {
 struct Renderer::State {
     std::unique_ptr<ShaderLibrary> shaders;
     std::unique_ptr<GpuScene> scene;
+    std::uint64_t sceneUploads = 0; ///< setScene() calls (Renderer::sceneUploads)
     ChangeVersions versions;
     VoxelVolume voxels;
     ShadowMaps shadows;
@@ -221,6 +222,7 @@ Renderer::~Renderer() = default;
 void Renderer::setScene(const Scene& scene)
 {
     m_state->scene = std::make_unique<GpuScene>(scene);
+    ++m_state->sceneUploads;
     ++m_state->versions.staticGeometry;
     ++m_state->versions.dynamicGeometry;
     ++m_state->versions.lightPlacement;
@@ -250,6 +252,28 @@ void Renderer::setMeshTransform(std::size_t mesh, const glm::mat4& transform)
     m_state->scene->setTransform(mesh, transform);
     // The shadow pass keys on geometry versions too, so the maps follow the move.
     ++(dynamic ? m_state->versions.dynamicGeometry : m_state->versions.staticGeometry);
+}
+
+void Renderer::setMeshVisible(std::size_t mesh, bool visible)
+{
+    if (mesh >= m_state->scene->meshCount() || m_state->scene->scene().meshes[mesh].visible == visible)
+        return;
+    m_state->scene->setVisible(mesh, visible);
+    // The scene's bounds, and with them the grid, may change: a static rebuild (which redoes the dynamic
+    // layer too) is what a new scene would get, minus the upload.
+    ++m_state->versions.staticGeometry;
+    ++m_state->versions.dynamicGeometry;
+    if (m_state->scene->scene()
+            .materials[std::size_t(m_state->scene->scene().meshes[mesh].material)]
+            .isEmissive()) {
+        ++m_state->versions.lightPlacement;
+        ++m_state->versions.lightValues;
+    }
+}
+
+std::uint64_t Renderer::sceneUploads() const
+{
+    return m_state->sceneUploads;
 }
 
 void Renderer::setMaterial(std::size_t index, const Material& material)

@@ -46,6 +46,13 @@ public:
     const RenderSettings& settings() const { return m_settings; }
     /** Moves one mesh. Moving a dynamic mesh re-voxelizes dynamic meshes only. */
     void setMeshTransform(std::size_t mesh, const glm::mat4& transform);
+    /**
+     * Shows or hides one mesh without uploading the scene again: the voxels and shadow maps are redone (the
+     * geometry and with it the grid's bounds change), the buffers and textures stay.
+     */
+    void setMeshVisible(std::size_t mesh, bool visible);
+    /** How many times setScene() has uploaded a scene, for tests of what an edit reuses. */
+    std::uint64_t sceneUploads() const;
     void setMaterial(std::size_t index, const Material& material);
     /** Replaces the lights; lights equal to the current ones (a renamed light) change nothing. */
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals,

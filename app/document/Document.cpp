@@ -565,7 +565,7 @@ int Document::lightIndex(quint64 id) const
     return it == m_state.lights.end() ? -1 : int(it - m_state.lights.begin());
 }
 
-render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
+render::Scene Document::buildRenderScene(std::vector<int>* meshToNode, bool hidden) const
 {
     render::Scene scene;
     if (meshToNode)
@@ -579,7 +579,7 @@ render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
     scene.materials = m_state.materials;
     for (std::size_t i = 0; i < m_state.nodes.size(); ++i) {
         const SceneNode& node = m_state.nodes[i];
-        if (!node.visible)
+        if (!node.visible && !hidden)
             continue;
         const render::Scene& source = sourceScene(node.source);
         if (node.mesh < 0 || std::size_t(node.mesh) >= source.meshes.size())
@@ -588,6 +588,7 @@ render::Scene Document::buildRenderScene(std::vector<int>* meshToNode) const
         mesh.transform = node.transform.matrix() * mesh.transform;
         mesh.material = node.material;
         mesh.dynamic = node.dynamic;
+        mesh.visible = node.visible;
         scene.meshes.push_back(std::move(mesh));
         if (meshToNode)
             meshToNode->push_back(int(i));

@@ -134,10 +134,12 @@ public:
     int lightIndex(quint64 id) const;
 
     /**
-     * The scene the renderer draws: visible nodes only, each mesh transformed by its node. meshToNode, if
-     * given, receives for each renderer mesh the node index it came from.
+     * The scene the renderers draw: visible nodes only, each mesh transformed by its node. meshToNode, if
+     * given, receives for each renderer mesh the node index it came from. With @p hidden, hidden nodes'
+     * meshes are there too, marked invisible (render::Mesh::visible), so that showing one again needs no new
+     * scene.
      */
-    render::Scene buildRenderScene(std::vector<int>* meshToNode = nullptr) const;
+    render::Scene buildRenderScene(std::vector<int>* meshToNode = nullptr, bool hidden = false) const;
     /** World transform of a node's mesh (node transform times the imported one). */
     glm::mat4 nodeWorldTransform(int node) const;
     /** World-space bounds of a node's mesh, metres; empty for a node without geometry. */

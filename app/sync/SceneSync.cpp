@@ -35,8 +35,10 @@ SceneSync::SceneSync(doc::Document* document, QObject* parent)
 void SceneSync::onChanged(const doc::ChangeEvent& event)
 {
     using Kind = doc::ChangeEvent::Kind;
-    if (event.kind == Kind::Reset || event.kind == Kind::Structure)
+    if (event.kind == Kind::Reset)
         m_needsReset = true;
+    else if (event.kind == Kind::Structure)
+        m_structureChanged = true;
     else if (event.kind != Kind::Camera) // the camera is read every frame
         m_pending.push_back(event);
 }
@@ -45,13 +47,15 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
 {
     using Kind = doc::ChangeEvent::Kind;
     const doc::DocumentState& state = m_document->state();
-    if (m_needsReset || fullRebuild) {
+    if (m_needsReset || fullRebuild || (m_structureChanged && !applyVisibility(renderer))) {
         renderer.setSettings(state.settings);
         rebuildScene(renderer);
         m_needsReset = false;
+        m_structureChanged = false;
         m_pending.clear();
         return;
     }
+    m_structureChanged = false;
     bool lights = false, settings = false;
     std::vector<int> materials, nodes;
     for (const doc::ChangeEvent& event : m_pending) {
@@ -93,12 +97,32 @@ void SceneSync::apply(render::Renderer& renderer, bool fullRebuild)
                 renderer.setMeshTransform(mesh, m_document->nodeWorldTransform(node));
 }
 
+bool SceneSync::applyVisibility(render::Renderer& renderer)
+{
+    const std::vector<doc::SceneNode>& nodes = m_document->state().nodes;
+    if (nodes.size() != m_nodeIds.size())
+        return false;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i].id != m_nodeIds[i])
+            return false;
+    for (std::size_t mesh = 0; mesh < m_meshToNode.size(); ++mesh) {
+        const std::size_t node = std::size_t(m_meshToNode[mesh]);
+        renderer.setMeshVisible(mesh, nodes[node].visible);
+    }
+    return true;
+}
+
 void SceneSync::rebuildScene(render::Renderer& renderer)
 {
-    renderer.setScene(m_document->buildRenderScene(&m_meshToNode));
+    // Hidden nodes' meshes go to the renderer too, marked hidden: showing one again is then a flag, not a
+    // new scene with every buffer and texture uploaded again.
+    renderer.setScene(m_document->buildRenderScene(&m_meshToNode, true));
     m_nodeDynamic.clear();
-    for (const doc::SceneNode& node : m_document->state().nodes)
+    m_nodeIds.clear();
+    for (const doc::SceneNode& node : m_document->state().nodes) {
         m_nodeDynamic.push_back(node.dynamic);
+        m_nodeIds.push_back(node.id);
+    }
 }
 
 } // namespace vct::sync

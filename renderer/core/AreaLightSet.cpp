@@ -134,7 +134,7 @@ void AreaLightSet::addEmitters(const Scene& scene, float weld)
 {
     std::vector<Triangle> emitting;
     for (const Mesh& mesh : scene.meshes) {
-        if (mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size())
+        if (!mesh.visible || mesh.material < 0 || std::size_t(mesh.material) >= scene.materials.size())
             continue;
         const glm::vec3 emission = scene.materials[std::size_t(mesh.material)].usableEmission();
         if (emission == glm::vec3(0.0f))

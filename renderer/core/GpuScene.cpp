@@ -239,6 +239,8 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
     const bool perCluster = options.visibleIn || options.from;
     for (std::size_t i = 0; i < m_meshes.size(); ++i) {
         const Mesh& mesh = m_scene.meshes[i];
+        if (!mesh.visible)
+            continue;
         if ((options.layer == MeshFilter::Static && mesh.dynamic)
             || (options.layer == MeshFilter::Dynamic && !mesh.dynamic))
             continue;
@@ -302,6 +304,15 @@ void GpuScene::setTransform(std::size_t mesh, const glm::mat4& transform)
     }
 }
 
+void GpuScene::setVisible(std::size_t mesh, bool visible)
+{
+    if (mesh < m_scene.meshes.size() && m_scene.meshes[mesh].visible != visible) {
+        m_scene.meshes[mesh].visible = visible;
+        if (materialOf(mesh).isEmissive())
+            rebuildAreaLights();
+    }
+}
+
 void GpuScene::setMaterial(std::size_t index, const Material& material)
 {
     if (index < m_scene.materials.size()) {
@@ -328,7 +339,7 @@ void GpuScene::setLights(const std::vector<PointLight>& points,
 bool GpuScene::hasDynamicMeshes() const
 {
     for (const Mesh& mesh : m_scene.meshes)
-        if (mesh.dynamic)
+        if (mesh.dynamic && mesh.visible)
             return true;
     return false;
 }

@@ -76,6 +76,8 @@ public:
     /** Binds the area-light table (shaders/common/AreaLights.glsl) to texture unit `unit`. */
     void bindAreaLightTable(GLuint unit) const;
     void setTransform(std::size_t mesh, const glm::mat4& transform);
+    /** Shows or hides a mesh (Mesh::visible); its buffers stay. */
+    void setVisible(std::size_t mesh, bool visible);
     void setMaterial(std::size_t index, const Material& material);
     void setLights(const std::vector<PointLight>& points, const std::vector<DirectionalLight>& directionals,
         const std::vector<SurfaceLight>& surfaces);

@@ -20,6 +20,9 @@ struct Mesh {
     int material = 0; ///< Index into Scene::materials.
     glm::mat4 transform { 1.0f }; ///< Object to world.
     bool dynamic = false; ///< Re-voxelized when it moves; kept out of the static voxels.
+    /// Hidden meshes stay uploaded (showing one again costs no upload) but are drawn, voxelized, lit and
+    /// counted nowhere: every reader of Scene::meshes skips them.
+    bool visible = true;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -21,7 +21,8 @@ Aabb Scene::bounds() const
 {
     Aabb box;
     for (const Mesh& mesh : meshes)
-        box.extend(meshBounds(mesh));
+        if (mesh.visible)
+            box.extend(meshBounds(mesh));
     return box;
 }
 
@@ -29,7 +30,7 @@ Aabb Scene::bounds(bool dynamicMeshes) const
 {
     Aabb box;
     for (const Mesh& mesh : meshes)
-        if (mesh.dynamic == dynamicMeshes)
+        if (mesh.visible && mesh.dynamic == dynamicMeshes)
             box.extend(meshBounds(mesh));
     return box;
 }
@@ -38,7 +39,7 @@ std::size_t Scene::triangleCount() const
 {
     std::size_t n = 0;
     for (const Mesh& mesh : meshes)
-        n += mesh.triangleCount();
+        n += mesh.visible ? mesh.triangleCount() : 0;
     return n;
 }
 

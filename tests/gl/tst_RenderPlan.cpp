@@ -562,6 +562,39 @@ void RenderPlanTest::renamesChangeNothingTheRendererHas()
     document.setLight(0, light, doc::LightField::Name);
     expectUnchanged("light renamed");
 
+    // Hiding a node redoes what its geometry reaches (shadow maps, voxels, light) but uploads nothing: the
+    // renderer keeps the hidden mesh, flagged. Showing it again is the same. Each image is the one a scene
+    // built without the node (or with it) gives from scratch.
+    int hidden = -1;
+    for (std::size_t i = 0; i < document.state().nodes.size(); ++i)
+        if (document.state().nodes[i].name.startsWith(QStringLiteral("tallbox")))
+            hidden = int(i);
+    QVERIFY(hidden >= 0);
+    for (const bool visible : { false, true }) {
+        const char* what = visible ? "node shown again" : "node hidden";
+        const std::uint64_t uploads = m_gl.renderer->sceneUploads();
+        document.setNodeVisible(hidden, visible);
+        QVERIFY(sceneSync.hasPendingChanges());
+        sceneSync.apply(*m_gl.renderer);
+        planned();
+        QVERIFY2(m_gl.renderer->sceneUploads() == uploads, what);
+        for (const char* name : { "shadow maps", "voxelize", "inject light" })
+            QVERIFY2(pass(name).action == "run",
+                qPrintable(QString("%1: %2 %3").arg(what, name, pass(name).action.c_str())));
+        expectSameAsForced(what);
+        // From scratch: a renderer given the scene the document now makes, hidden nodes left out.
+        const render::RadianceImage kept = m_plannedImage;
+        m_gl.renderer->setScene(document.buildRenderScene());
+        m_gl.renderer->renderFrame(m_camera, 40, 40);
+        const render::RadianceImage scratch = m_gl.renderer->readFrame();
+        const double difference = io::ImageMetrics::relativeMse(kept, scratch);
+        QVERIFY2(difference < 1e-6,
+            qPrintable(QString("%1: relative MSE %2 from a new scene").arg(what).arg(difference)));
+        sceneSync.apply(*m_gl.renderer, true);
+        planned();
+    }
+    QVERIFY(document.state().nodes[std::size_t(hidden)].visible);
+
     // The dynamic flag is a property too, and does change the voxel layers.
     document.setNodeDynamic(0, !document.state().nodes.front().dynamic);
     sceneSync.apply(*m_gl.renderer);
