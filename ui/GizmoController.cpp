@@ -18,6 +18,7 @@ constexpr float kMinScale = 1.0e-4f;
 constexpr float kMaxScale = 1.0e4f;
 constexpr float kMinLightSize = 1.0e-3f;
 constexpr float kMaxLightSize = 1.0e3f;
+constexpr float kSnapDegrees = 15.0f;
 
 glm::mat3 rotationOf(const doc::NodeTransform& t)
 {
@@ -120,34 +121,44 @@ bool GizmoController::press(const ViewProjection& view, const QPointF& at)
     return true;
 }
 
-void GizmoController::drag(const QPointF& at)
+void GizmoController::drag(const QPointF& at, bool snap)
 {
     if (m_part < 0)
         return;
-    apply(at);
+    apply(at, snap);
 }
 
-void GizmoController::apply(const QPointF& at)
+void GizmoController::apply(const QPointF& at, bool snap)
 {
     const glm::vec3 centre = m_target.centre;
     const GizmoMode mode = m_pressed.mode();
+    glm::vec3 move = mode == GizmoMode::Move ? m_pressed.translation(m_part, m_pressAt, at) : glm::vec3(0.0f);
+    float turnDeg = mode == GizmoMode::Rotate ? m_pressed.rotationDeg(m_part, m_pressAt, at) : 0.0f;
+    float factor = mode == GizmoMode::Scale ? m_pressed.scaleFactor(m_part, m_pressAt, at) : 1.0f;
+    if (snap) {
+        const float step
+            = std::pow(10.0f, std::round(std::log10(std::max(m_pressed.worldSize(), 1e-6f) / 8.0f)));
+        const glm::vec3 axis = m_pressed.axis(m_part);
+        move = axis * (std::round(glm::dot(move, axis) / step) * step);
+        turnDeg = std::round(turnDeg / kSnapDegrees) * kSnapDegrees;
+        factor = std::max(std::round(factor * 10.0f) / 10.0f, 0.1f);
+    }
     if (m_target.node >= 0) {
         doc::NodeTransform t = m_startTransform;
         if (mode == GizmoMode::Move) {
-            t.translation += m_pressed.translation(m_part, m_pressAt, at);
+            t.translation += move;
         } else if (mode == GizmoMode::Rotate) {
             // About the middle of the bounds: M' = C R C^-1 M, so T' = c + R (T - c) and the rotation goes
             // in front of the node's own.
-            const glm::mat3 r = turn(m_pressed.axis(m_part), m_pressed.rotationDeg(m_part, m_pressAt, at));
+            const glm::mat3 r = turn(m_pressed.axis(m_part), turnDeg);
             t.translation = centre + r * (t.translation - centre);
             t.rotationDeg = eulerDegrees(r * rotationOf(t));
         } else if (mode == GizmoMode::Scale) {
-            const float f = m_pressed.scaleFactor(m_part, m_pressAt, at);
             glm::vec3 factors(1.0f);
             if (m_part == TransformGizmo::kUniform)
-                factors = glm::vec3(f);
+                factors = glm::vec3(factor);
             else
-                factors[m_part] = f;
+                factors[m_part] = factor;
             factors = glm::clamp(t.scale * factors, kMinScale, kMaxScale) / t.scale;
             // Along the node's own axes about the middle: T' = c + R D R^-1 (T - c), S' = D S.
             const glm::mat3 r = rotationOf(t);
@@ -160,13 +171,12 @@ void GizmoController::apply(const QPointF& at)
     }
     doc::LightNode light = m_startLight;
     if (mode == GizmoMode::Move) {
-        light.position += m_pressed.translation(m_part, m_pressAt, at);
+        light.position += move;
     } else if (mode == GizmoMode::Rotate) {
-        light.direction
-            = turn(m_pressed.axis(m_part), m_pressed.rotationDeg(m_part, m_pressAt, at)) * light.direction;
+        light.direction = turn(m_pressed.axis(m_part), turnDeg) * light.direction;
     } else if (mode == GizmoMode::Scale) {
-        const float f = m_pressed.scaleFactor(m_part, m_pressAt, at);
-        const auto scaled = [f](float size) { return std::clamp(size * f, kMinLightSize, kMaxLightSize); };
+        const auto scaled
+            = [factor](float size) { return std::clamp(size * factor, kMinLightSize, kMaxLightSize); };
         if (light.isSurface()) {
             light.areaWidth = scaled(light.areaWidth);
             light.areaHeight = scaled(light.areaHeight);

@@ -39,8 +39,12 @@ public:
     TransformGizmo gizmo(const ViewProjection& view) const;
     /** Starts a drag when @p at is on a handle of the gizmo; false leaves the press to the camera. */
     bool press(const ViewProjection& view, const QPointF& at);
-    /** The target follows the cursor to @p at. */
-    void drag(const QPointF& at);
+    /**
+     * The target follows the cursor to @p at. With @p snap (Ctrl held) it moves by round steps that suit the
+     * zoom (the power of ten nearest an eighth of the handles' length: 0.01, 0.1, 1 m...), turns by 15
+     * degrees and scales by tenths.
+     */
+    void drag(const QPointF& at, bool snap = false);
     /** Ends the drag as one undo step. */
     void release();
     /** Ends the drag with the target back as it was before it. */
@@ -59,7 +63,7 @@ private:
         unsigned parts = 0; ///< handles the target can take in the current mode (TransformGizmo's bits)
     };
     Target target() const;
-    void apply(const QPointF& at);
+    void apply(const QPointF& at, bool snap);
 
     doc::Document* m_document;
     GizmoMode m_mode = GizmoMode::None;

@@ -48,6 +48,8 @@ public:
 
     GizmoMode mode() const { return m_mode; }
     const glm::vec3& centre() const { return m_centre; }
+    /** World metres the handles span on screen (kSizePixels at the centre's depth). */
+    float worldSize() const { return m_length; }
     /** Unit direction of part 0..2. */
     glm::vec3 axis(int part) const;
     /** The handles on screen; empty when the centre is behind the camera or the mode is None. */

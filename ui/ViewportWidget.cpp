@@ -390,7 +390,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     m_lastMouse = position;
     const render::Camera& camera = m_document->state().camera;
     if (m_gizmo.dragging()) {
-        m_gizmo.drag(event->position());
+        m_gizmo.drag(event->position(), event->modifiers() & Qt::ControlModifier);
         startInteraction();
         refreshGizmo();
         return;
@@ -509,6 +509,8 @@ QList<std::pair<QString, QString>> ViewportWidget::inputBindings()
                "Scene panel)") },
         { tr("Q"), tr("No handles") },
         { tr("Drag a handle"), tr("Move, rotate or scale along its axis; Esc while dragging puts it back") },
+        { tr("Ctrl while dragging a handle"),
+            tr("Snap: round steps for the zoom, 15°, tenths of the scale") },
         { tr("Right drag"), tr("Look around") },
         { tr("W / S with the right button held"), tr("Fly forward / back") },
         { tr("A / D with the right button held"), tr("Fly left / right") },

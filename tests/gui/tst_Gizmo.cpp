@@ -69,8 +69,12 @@ private slots:
 private:
     render::FrameStats nextFrame();
     int shortBox() const;
-    /** Drags with the left button from @p from to @p to in steps; @p escape presses Esc before letting go. */
-    void drag(const QPoint& from, const QPoint& to, bool escape = false);
+    /**
+     * Drags with the left button from @p from to @p to in steps, holding @p held while moving; @p escape
+     * presses Esc before letting go.
+     */
+    void drag(const QPoint& from, const QPoint& to, bool escape = false,
+        Qt::KeyboardModifiers held = Qt::NoModifier);
     std::vector<ui::TransformGizmo::Handle> shownHandles() const;
     /** Saves the window to the test output folder, to look at. */
     void screenshot(const char* name) const;
@@ -88,7 +92,7 @@ int GizmoTest::shortBox() const
     return test::nodeNamed(*m_window->document(), QStringLiteral("shortbox"));
 }
 
-void GizmoTest::drag(const QPoint& from, const QPoint& to, bool escape)
+void GizmoTest::drag(const QPoint& from, const QPoint& to, bool escape, Qt::KeyboardModifiers held)
 {
     ui::ViewportWidget* viewport = m_window->viewport();
     QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, from);
@@ -96,7 +100,7 @@ void GizmoTest::drag(const QPoint& from, const QPoint& to, bool escape)
     for (int i = 1; i <= steps; ++i) {
         const QPointF at = QPointF(from) + QPointF(to - from) * double(i) / steps;
         QMouseEvent move(
-            QEvent::MouseMove, at, viewport->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+            QEvent::MouseMove, at, viewport->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, held);
         QCoreApplication::sendEvent(viewport, &move);
     }
     if (escape)
@@ -247,6 +251,19 @@ void GizmoTest::draggingAHandleMovesTheNodeInOneUndoStep()
     QCOMPARE(document->selectedNode(), node);
     document->undoStack()->undo();
     QVERIFY(document->state().nodes[std::size_t(node)].transform == original);
+
+    // Ctrl held while moving snaps to a round step for the zoom: a power of ten near an eighth of the
+    // handles.
+    drag(start, end, false, Qt::ControlModifier);
+    const float step
+        = std::pow(10.0f, std::round(std::log10(viewport->overlay()->gizmo().worldSize() / 8.0f)));
+    const float snapped
+        = document->state().nodes[std::size_t(node)].transform.translation.x - original.translation.x;
+    qInfo("snapped to %.4f m in steps of %.4f m", double(snapped), double(step));
+    QVERIFY2(snapped > 0.0f && std::abs(snapped / step - std::round(snapped / step)) < 1e-3f,
+        qPrintable(QString::number(double(snapped))));
+    QVERIFY(std::abs(snapped - expected) <= 0.5f * step + 1e-6f);
+    document->undoStack()->undo();
 }
 
 void GizmoTest::turningKeepsTheMiddleInPlace()
@@ -284,6 +301,13 @@ void GizmoTest::turningKeepsTheMiddleInPlace()
     QVERIFY2(glm::length(after - middle) < 1e-4f, qPrintable(test::describe(after - middle)));
     document->undoStack()->undo();
     QVERIFY(document->state().nodes[std::size_t(node)].transform == original);
+
+    // Ctrl held while turning snaps to 15 degrees: the same drag turns by 30 or 45.
+    drag(from, to, false, Qt::ControlModifier);
+    const float snapped = document->state().nodes[std::size_t(node)].transform.rotationDeg.y;
+    QVERIFY2(std::abs(snapped - 15.0f * std::round(expected / 15.0f)) < 1e-3f,
+        qPrintable(QString::number(double(snapped))));
+    document->undoStack()->undo();
 }
 
 void GizmoTest::scalingAndEscape()
