@@ -1,4 +1,5 @@
 #include "scene/RenderSettings.h"
+#include "scene/VoxelTextureEstimate.h"
 
 #include <charconv>
 #include <cmath>
@@ -256,41 +257,9 @@ std::string RenderSettings::validate() const
 
 std::uint64_t RenderSettings::voxelMemoryBytes(VoxelSceneNeeds scene) const
 {
-    // Mirrors the allocations in VoxelizePass::allocate and MipmapPass::buildDirectional.
-    auto chain = [](std::uint64_t side, std::uint64_t bytesPerTexel, bool mips) {
-        std::uint64_t total = 0;
-        for (std::uint64_t s = side; s >= 1; s /= 2) {
-            total += s * s * s * bytesPerTexel;
-            if (!mips)
-                break;
-        }
-        return total;
-    };
-    const std::uint64_t n = std::uint64_t(voxelResolution);
-    // Albedo and normal, 4 bytes each; emission too, for a scene with emissive materials.
-    std::uint64_t bytes = (scene.emission ? 3 : 2) * chain(n, 4, false);
-    if (scene.areaLights)
-        bytes += chain(n, 4, true); // opacity per axis, rgba8, full chain (area-light shadows)
-    // The volume cones trace, rgba16f: with anisotropic mips level 0 and six directional chains from level 1
-    // with the five gaps between them, else its box mip chain. It is the bounced volume when bounces are
-    // carried by the voxels (the first-bounce radiance then keeps level 0 only as its source), else the
-    // first-bounce radiance itself. (Box levels made for the inspector are not counted: made on demand.)
-    const bool bounced = bounces != 1 && scene.lightSources;
-    bytes += chain(n, 8, !bounced && !anisotropicMips);
-    if (bounced)
-        bytes += chain(n, 8, !anisotropicMips);
-    if (anisotropicMips && n >= 2)
-        bytes += 11 * chain(n / 2, 8, true);
-    // Cells of the bounce gather and of the irradiance cache: front and back rgba16f, normal rgba8 snorm; the
-    // cache also keeps which cells were gathered (r32ui).
-    if (bounced) {
-        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(bounceCellSize), 1);
-        bytes += 2 * chain(cells, 8, false) + chain(cells, 4, false);
-    }
-    if (irradianceCache) {
-        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(irradianceCellSize), 1);
-        bytes += 2 * chain(cells, 8, false) + 2 * chain(cells, 4, false);
-    }
+    std::uint64_t bytes = 0;
+    for (const VoxelTextureEstimate& texture : VoxelTextureEstimate::of(*this, scene))
+        bytes += texture.bytes;
     return bytes;
 }
 

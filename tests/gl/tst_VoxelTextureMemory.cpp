@@ -1,7 +1,11 @@
 #include "GlTestContext.h"
 #include "TestSupport.h"
 
+#include "scene/VoxelTextureEstimate.h"
+
 #include <QtTest>
+
+#include <map>
 
 using namespace vct;
 
@@ -92,6 +96,21 @@ void VoxelTextureMemoryTest::levelsHalveAndAddUpToTheTotal()
     QCOMPARE(directional, anisotropic ? 1 : 0);
     QCOMPARE(total, renderer.voxelBytes());
     QCOMPARE(total, stats.voxelBytes);
+    // The estimate the budget check uses, texture by texture: the same textures, by name, of the same sizes.
+    std::map<std::string, std::uint64_t> estimated, allocated;
+    for (const render::VoxelTextureEstimate& e : render::VoxelTextureEstimate::of(
+             settings, { .emission = false, .areaLights = false, .lightSources = true }))
+        estimated[e.name] = e.bytes;
+    for (const render::VoxelTextureMemory& m : memory)
+        allocated[m.name] = m.totalBytes();
+    const auto listed = [](const std::map<std::string, std::uint64_t>& textures) {
+        QStringList out;
+        for (const auto& [name, bytes] : textures)
+            out << QString("%1 %2").arg(name.c_str()).arg(bytes);
+        return out.join(", ");
+    };
+    QVERIFY2(estimated == allocated,
+        qPrintable(QString("estimated: %1\nallocated: %2").arg(listed(estimated), listed(allocated))));
     // The occupied voxels the stats report are those holding a surface.
     int size = 0;
     const std::vector<float> albedo = renderer.readVoxels("albedo", 0, size);

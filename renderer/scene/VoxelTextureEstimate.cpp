@@ -1,0 +1,68 @@
+#include "scene/VoxelTextureEstimate.h"
+
+#include "scene/RenderSettings.h"
+
+#include <algorithm>
+
+namespace vct::render {
+
+namespace {
+
+/** Bytes of a cube of @p side texels of @p bytesPerTexel, with its whole mip chain when @p mips. */
+std::uint64_t chain(std::uint64_t side, std::uint64_t bytesPerTexel, bool mips)
+{
+    std::uint64_t total = 0;
+    for (std::uint64_t s = side; s >= 1; s /= 2) {
+        total += s * s * s * bytesPerTexel;
+        if (!mips)
+            break;
+    }
+    return total;
+}
+
+} // namespace
+
+std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
+    const RenderSettings& settings, VoxelSceneNeeds scene)
+{
+    std::vector<VoxelTextureEstimate> textures;
+    const std::uint64_t n = std::uint64_t(settings.voxelResolution);
+    // The voxelizer's averages (VoxelizePass): albedo rgba8, normal rgba8 snorm, and emission
+    // (r11f_g11f_b10f) for a scene with emissive materials.
+    textures.push_back({ "albedo", chain(n, 4, false) });
+    textures.push_back({ "normal", chain(n, 4, false) });
+    if (scene.emission)
+        textures.push_back({ "emission", chain(n, 4, false) });
+    // The volume cones trace, rgba16f: with anisotropic mips level 0 and six directional chains from level 1
+    // (one stack of six tiles with five gaps between them), else its box mip chain. It is the bounced volume
+    // when bounces are carried by the voxels (the first-bounce radiance then keeps level 0 only, as the
+    // iteration's source), else the first-bounce radiance itself.
+    const bool bounced = settings.bounces != 1 && scene.lightSources;
+    textures.push_back({ "radiance", chain(n, 8, !bounced && !settings.anisotropicMips) });
+    if (scene.areaLights)
+        textures.push_back({ "opacity", chain(n, 4, true) }); // rgba8 per axis, the area lights' shadow cones
+    if (settings.anisotropicMips && n >= 2)
+        textures.push_back({ bounced ? "bounced, directional (+x -x +y -y +z -z)"
+                                     : "radiance, directional (+x -x +y -y +z -z)",
+            11 * chain(n / 2, 8, true) });
+    if (bounced) {
+        textures.push_back({ "bounced", chain(n, 8, !settings.anisotropicMips) });
+        // The bounce gather's cells: front and back rgba16f, the normal rgba8 snorm.
+        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(settings.bounceCellSize), 1);
+        textures.push_back({ "bounce cells", chain(cells, 8, false) });
+        textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
+        textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
+    }
+    if (settings.irradianceCache) {
+        // The irradiance cache's cells, and which of them were gathered (r32ui).
+        const std::uint64_t cells
+            = std::max<std::uint64_t>(n / std::uint64_t(settings.irradianceCellSize), 1);
+        textures.push_back({ "irradiance cache", chain(cells, 8, false) });
+        textures.push_back({ "irradiance cache, back faces", chain(cells, 8, false) });
+        textures.push_back({ "irradiance cell normals", chain(cells, 4, false) });
+        textures.push_back({ "irradiance cells gathered", chain(cells, 4, false) });
+    }
+    return textures;
+}
+
+} // namespace vct::render

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "scene/VoxelSceneNeeds.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vct::render {
+
+struct RenderSettings;
+
+/**
+ * What the passes will allocate for the voxel grid under some settings, texture by texture, before anything
+ * is allocated: the budget check (RenderSettings::validate, which refuses a grid over voxel_budget_mb) and
+ * the tests that hold it to what GL reports (tst_VoxelTextureMemory compares every entry by name with
+ * VoxelVolume::textures()). The box levels the inspector makes on demand are not in it.
+ */
+struct VoxelTextureEstimate {
+    std::string name; ///< as VoxelVolume::textures() names the texture
+    std::uint64_t bytes = 0;
+
+    /** Every texture @p settings call for in a scene with @p scene's needs, with its size. */
+    static std::vector<VoxelTextureEstimate> of(const RenderSettings& settings, VoxelSceneNeeds scene);
+};
+
+} // namespace vct::render
