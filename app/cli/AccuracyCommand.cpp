@@ -210,6 +210,255 @@ int merge(const QString& studyDir, const QString& outDir, const QString& title)
     return missing.empty() ? 0 : 5;
 }
 
+/** One accuracy study as its options and inputs resolve it, shared by the steps of AccuracyCommand::run. */
+struct Study {
+    QString sceneSpec, sweepPath, cameraPath, lightsPath;
+    QStringList settingAssignments; ///< --set, as given
+    QStringList typed; ///< the command line, for the report's header
+    render::Scene scene;
+    render::Camera camera;
+    int width = 0, height = 0;
+    bool explicitSize = false; ///< --width or --height given
+    int frames = 5;
+    AccuracySweep sweep;
+    std::vector<int> curveSpp;
+    qulonglong seed = 0;
+    int maxBounces = 64;
+    render::ReferenceSettings tracerSettings;
+    bool threadsGiven = false;
+    QString glBackend;
+    bool glExplicit = false;
+    QString referenceFile; ///< --reference, or empty with --reference-spp
+    int referenceSpp = 0;
+    int vctJobs = 0, jobs = 0, onlyPoint = -1;
+    QString outDir, pointsDir;
+    // Set by loadReference.
+    render::RadianceImage reference;
+    QString referencePath, referenceDescription;
+};
+
+/** The reference: a file, or the path tracer's image cached in the output folder with what it was rendered
+ * from. Sets study.reference, referencePath and referenceDescription; 0, or the exit code. */
+int loadReference(Study& study)
+{
+    if (!study.referenceFile.isEmpty()) {
+        study.referencePath = study.referenceFile;
+        std::string readError;
+        auto image = io::ImageFile::read(study.referencePath.toStdString(), &readError);
+        if (!image)
+            return fail(1, QString::fromStdString(readError));
+        study.reference = std::move(*image);
+        if (study.explicitSize
+            && (study.width != study.reference.width || study.height != study.reference.height))
+            return fail(1,
+                QStringLiteral("--width/--height %1x%2 differ from the reference's %3x%4: errors are "
+                               "measured at the reference's size")
+                    .arg(study.width)
+                    .arg(study.height)
+                    .arg(study.reference.width)
+                    .arg(study.reference.height));
+        if (std::abs(
+                double(study.width) / study.height - double(study.reference.width) / study.reference.height)
+            > 1e-3)
+            std::fprintf(stderr,
+                "vct-bench accuracy: warning: the camera is framed for %dx%d, the reference is %dx%d\n",
+                study.width, study.height, study.reference.width, study.reference.height);
+        study.width = study.reference.width;
+        study.height = study.reference.height;
+        study.referenceDescription
+            = QStringLiteral("`%1` (%2×%3)").arg(study.referenceFile).arg(study.width).arg(study.height);
+    } else {
+        study.referencePath = QDir(study.outDir).filePath(QStringLiteral("reference.pfm"));
+        const QString keyPath = QDir(study.outDir).filePath(QStringLiteral("reference.json"));
+        const QString key = QStringLiteral(
+            "%1 | %2x%3 | %4 spp | seed %5 | max bounces %6 | camera %7 -> %8 up %9 fov %10 | lights %11")
+                                .arg(absoluteIfFile(study.sceneSpec))
+                                .arg(study.width)
+                                .arg(study.height)
+                                .arg(study.referenceSpp)
+                                .arg(study.seed)
+                                .arg(study.maxBounces)
+                                .arg(vec3Text(study.camera.position), vec3Text(study.camera.lookAt),
+                                    vec3Text(study.camera.up))
+                                .arg(double(study.camera.fovYDeg))
+                                .arg(!study.lightsPath.isEmpty() ? absoluteIfFile(study.lightsPath)
+                                                                 : QStringLiteral("scene"));
+        std::string cachedKey;
+        QString ignored;
+        if (QFile::exists(study.referencePath) && QFile::exists(keyPath)
+            && readText(keyPath, cachedKey, &ignored)
+            && QJsonDocument::fromJson(QByteArray::fromStdString(cachedKey))
+                    .object()[QStringLiteral("key")]
+                    .toString()
+                == key) {
+            if (auto image = io::ImageFile::read(study.referencePath.toStdString()))
+                study.reference = std::move(*image);
+        }
+        if (study.reference.isEmpty()) {
+            std::fprintf(stderr, "vct-bench accuracy: rendering the reference, %dx%d at %d spp\n",
+                study.width, study.height, study.referenceSpp);
+            try {
+                render::ReferenceRenderer tracer(
+                    study.scene, study.camera, study.width, study.height, study.tracerSettings);
+                TerminalProgress progress("  reference");
+                tracer.render(study.referenceSpp, [&](double fraction) { progress(fraction); });
+                progress.finish();
+                study.reference = tracer.image();
+                std::fprintf(stderr, "  %.2f s\n", tracer.stats().seconds);
+            } catch (const std::exception& e) {
+                return fail(3, QString::fromUtf8(e.what()));
+            }
+            std::string writeError;
+            if (!io::ImageFile::write(study.referencePath.toStdString(), study.reference, 1.0f, &writeError))
+                return fail(3, QString::fromStdString(writeError));
+            QJsonObject json;
+            json[QStringLiteral("key")] = key;
+            QString error;
+            if (!files::AtomicFile::write(keyPath, QJsonDocument(json).toJson().toStdString(), &error))
+                return fail(3, error);
+        }
+        study.referenceDescription = QStringLiteral(
+            "the path tracer at %1 spp (seed %2, up to %3 bounces), %4×%5, cached as `reference.pfm`")
+                                         .arg(study.referenceSpp)
+                                         .arg(study.seed)
+                                         .arg(study.maxBounces)
+                                         .arg(study.width)
+                                         .arg(study.height);
+    }
+
+    return 0;
+}
+
+/** The study's description beside its points, for --merge to head its report with. */
+bool writeStudy(const Study& study, QString* problem)
+{
+    QString header = QStringLiteral(
+        "`%1`\n\nReference: %2. VCT: %3 point(s) of `%4`, median of %5 full frame(s) after a warm-up, at "
+        "%6×%7. Path tracer: %8 spp, up to %9 bounces, seeds from %10.")
+                         .arg(study.typed.join(QLatin1Char(' ')), study.referenceDescription)
+                         .arg(study.vctJobs)
+                         .arg(study.sweepPath)
+                         .arg(study.frames)
+                         .arg(study.width)
+                         .arg(study.height)
+                         .arg(sppListText(study.curveSpp))
+                         .arg(study.maxBounces)
+                         .arg(study.seed + 1);
+    QJsonObject json;
+    json[QStringLiteral("scene")] = study.sceneSpec;
+    json[QStringLiteral("header")] = header;
+    return files::AtomicFile::write(
+        QDir(study.pointsDir).filePath(kStudyFile), QJsonDocument(json).toJson().toStdString(), problem);
+}
+
+/** --emit-jobs: one command per point on stdout, each measuring that point alone (--only-point). */
+int emitJobs(const Study& study)
+{
+    QStringList common { QCoreApplication::applicationFilePath(), QStringLiteral("accuracy"),
+        absoluteIfFile(study.sceneSpec) };
+    if (!study.cameraPath.isEmpty())
+        common << QStringLiteral("--camera") << absoluteIfFile(study.cameraPath);
+    if (!study.lightsPath.isEmpty())
+        common << QStringLiteral("--lights") << absoluteIfFile(study.lightsPath);
+    common << QStringLiteral("--width") << QString::number(study.width) << QStringLiteral("--height")
+           << QString::number(study.height) << QStringLiteral("--sweep") << absoluteIfFile(study.sweepPath)
+           << QStringLiteral("--reference") << absoluteIfFile(study.referencePath)
+           << QStringLiteral("--frames") << QString::number(study.frames);
+    for (const QString& assignment : study.settingAssignments)
+        common << QStringLiteral("--set") << assignment;
+    if (study.glExplicit)
+        common << QStringLiteral("--gl") << study.glBackend;
+    common << QStringLiteral("--curve-spp") << sppListText(study.curveSpp) << QStringLiteral("--seed")
+           << QString::number(study.seed) << QStringLiteral("--max-bounces")
+           << QString::number(study.maxBounces);
+    if (study.threadsGiven)
+        common << QStringLiteral("--threads") << QString::number(study.tracerSettings.threads);
+    QStringList quoted;
+    for (const QString& word : common)
+        quoted << shellQuote(word);
+    const QString prefix = quoted.join(QLatin1Char(' '));
+    const QString pointsOut = shellQuote(QFileInfo(study.pointsDir).absoluteFilePath());
+    for (int k = 0; k < study.jobs; ++k)
+        std::printf("%s --only-point %d --out %s\n", qPrintable(prefix), k, qPrintable(pointsOut));
+    QString error;
+    if (!writeStudy(study, &error))
+        return fail(3, error);
+    std::fprintf(stderr,
+        "vct-bench accuracy: %d jobs (%d VCT points, %zu path-tracer points); when they are done:\n  %s "
+        "accuracy %s --merge %s\n",
+        study.jobs, study.vctJobs, study.curveSpp.size(),
+        qPrintable(shellQuote(QCoreApplication::applicationFilePath())),
+        qPrintable(shellQuote(study.sceneSpec)),
+        qPrintable(shellQuote(QFileInfo(study.outDir).absoluteFilePath())));
+    return 0;
+}
+
+/** Measures the study's points (all of them and merges, or the one --only-point names). */
+int measure(const Study& study)
+{
+    std::vector<int> toRun;
+    if (study.onlyPoint >= 0) {
+        toRun.push_back(study.onlyPoint);
+    } else {
+        for (const QString& stale :
+            QDir(study.pointsDir).entryList({ QStringLiteral("point-*.csv") }, QDir::Files))
+            QFile::remove(QDir(study.pointsDir).filePath(stale));
+        for (int k = 0; k < study.jobs; ++k)
+            toRun.push_back(k);
+        QString error;
+        if (!writeStudy(study, &error))
+            return fail(3, error);
+    }
+
+    std::unique_ptr<render::HeadlessContext> context;
+    std::unique_ptr<render::Renderer> renderer;
+    const AccuracyBenchmark benchmark(study.reference);
+    for (int k : toRun) {
+        std::vector<std::string> warnings;
+        AccuracyRow row;
+        try {
+            if (k < study.vctJobs) {
+                if (!renderer) {
+                    std::string contextError;
+                    context = render::HeadlessContext::createPreferring(
+                        study.glBackend.toStdString(), study.glExplicit, contextError);
+                    if (!context)
+                        return fail(2, QString::fromStdString(contextError));
+                    renderer = std::make_unique<render::Renderer>(context->procAddressFunction());
+                    renderer->setSettings(study.sweep.points()[std::size_t(k)].settings);
+                    renderer->setScene(study.scene);
+                }
+                row = benchmark.measureVct(
+                    *renderer, study.camera, study.sweep.points()[std::size_t(k)], study.frames, warnings);
+                row.machine = context->description();
+            } else {
+                const std::size_t c = std::size_t(k - study.vctJobs);
+                render::ReferenceSettings settings = study.tracerSettings;
+                settings.seed = study.seed + 1
+                    + c; // independent of the reference's noise and of the other curve points
+                row = benchmark.measurePathTracer(
+                    study.scene, study.camera, study.curveSpp[c], settings, warnings);
+            }
+        } catch (const std::exception& e) {
+            return fail(3, QStringLiteral("point %1: %2").arg(k).arg(QString::fromUtf8(e.what())));
+        }
+        row.point = k;
+        row.jobs = study.jobs;
+        row.loadAverage = loadAverage();
+        for (const std::string& warning : warnings)
+            std::fprintf(stderr, "vct-bench accuracy: warning: %s\n", warning.c_str());
+        std::fprintf(stderr, "  [%d/%d] %-36s %9.1f ms  rel. MSE %.4f  PSNR %.2f dB  (load %.1f)\n", k + 1,
+            study.jobs, row.label.c_str(), row.timeMs(), row.relMse, row.psnr, row.loadAverage);
+        QString error;
+        if (!files::AtomicFile::write(
+                QDir(study.pointsDir).filePath(pointFileName(k)), AccuracyCsv::write({ row }), &error))
+            return fail(3, error);
+    }
+    if (study.onlyPoint >= 0)
+        return 0;
+    return merge(study.outDir, study.outDir, QString());
+}
+
 } // namespace
 
 int AccuracyCommand::run(int argc, char** argv)
@@ -386,205 +635,39 @@ int AccuracyCommand::run(int argc, char** argv)
     if (!QDir().mkpath(pointsDir))
         return fail(3, QStringLiteral("cannot create '%1'").arg(pointsDir));
 
-    // The reference: a file, or the path tracer's image cached with what it was rendered from.
-    render::RadianceImage reference;
-    QString referencePath;
-    QString referenceDescription;
-    if (parser.isSet(referenceOption)) {
-        referencePath = parser.value(referenceOption);
-        std::string readError;
-        auto image = io::ImageFile::read(referencePath.toStdString(), &readError);
-        if (!image)
-            return fail(1, QString::fromStdString(readError));
-        reference = std::move(*image);
-        if (explicitSize && (width != reference.width || height != reference.height))
-            return fail(1,
-                QStringLiteral("--width/--height %1x%2 differ from the reference's %3x%4: errors are "
-                               "measured at the reference's size")
-                    .arg(width)
-                    .arg(height)
-                    .arg(reference.width)
-                    .arg(reference.height));
-        if (std::abs(double(width) / height - double(reference.width) / reference.height) > 1e-3)
-            std::fprintf(stderr,
-                "vct-bench accuracy: warning: the camera is framed for %dx%d, the reference is %dx%d\n",
-                width, height, reference.width, reference.height);
-        width = reference.width;
-        height = reference.height;
-        referenceDescription
-            = QStringLiteral("`%1` (%2×%3)").arg(parser.value(referenceOption)).arg(width).arg(height);
-    } else {
-        referencePath = QDir(outDir).filePath(QStringLiteral("reference.pfm"));
-        const QString keyPath = QDir(outDir).filePath(QStringLiteral("reference.json"));
-        const QString key = QStringLiteral(
-            "%1 | %2x%3 | %4 spp | seed %5 | max bounces %6 | camera %7 -> %8 up %9 fov %10 | lights %11")
-                                .arg(absoluteIfFile(sceneSpec))
-                                .arg(width)
-                                .arg(height)
-                                .arg(referenceSpp)
-                                .arg(seed)
-                                .arg(maxBounces)
-                                .arg(vec3Text(camera.position), vec3Text(camera.lookAt), vec3Text(camera.up))
-                                .arg(double(camera.fovYDeg))
-                                .arg(parser.isSet(lightsOption) ? absoluteIfFile(parser.value(lightsOption))
-                                                                : QStringLiteral("scene"));
-        std::string cachedKey;
-        QString ignored;
-        if (QFile::exists(referencePath) && QFile::exists(keyPath) && readText(keyPath, cachedKey, &ignored)
-            && QJsonDocument::fromJson(QByteArray::fromStdString(cachedKey))
-                    .object()[QStringLiteral("key")]
-                    .toString()
-                == key) {
-            if (auto image = io::ImageFile::read(referencePath.toStdString()))
-                reference = std::move(*image);
-        }
-        if (reference.isEmpty()) {
-            std::fprintf(stderr, "vct-bench accuracy: rendering the reference, %dx%d at %d spp\n", width,
-                height, referenceSpp);
-            try {
-                render::ReferenceRenderer tracer(scene, camera, width, height, tracerSettings);
-                TerminalProgress progress("  reference");
-                tracer.render(referenceSpp, [&](double fraction) { progress(fraction); });
-                progress.finish();
-                reference = tracer.image();
-                std::fprintf(stderr, "  %.2f s\n", tracer.stats().seconds);
-            } catch (const std::exception& e) {
-                return fail(3, QString::fromUtf8(e.what()));
-            }
-            std::string writeError;
-            if (!io::ImageFile::write(referencePath.toStdString(), reference, 1.0f, &writeError))
-                return fail(3, QString::fromStdString(writeError));
-            QJsonObject json;
-            json[QStringLiteral("key")] = key;
-            if (!files::AtomicFile::write(keyPath, QJsonDocument(json).toJson().toStdString(), &error))
-                return fail(3, error);
-        }
-        referenceDescription = QStringLiteral(
-            "the path tracer at %1 spp (seed %2, up to %3 bounces), %4×%5, cached as `reference.pfm`")
-                                   .arg(referenceSpp)
-                                   .arg(seed)
-                                   .arg(maxBounces)
-                                   .arg(width)
-                                   .arg(height);
-    }
-
-    QStringList typed { QStringLiteral("vct-bench") };
+    Study study;
+    study.sceneSpec = sceneSpec;
+    study.sweepPath = parser.value(sweepOption);
+    study.cameraPath = parser.value(cameraOption);
+    study.lightsPath = parser.value(lightsOption);
+    study.settingAssignments = parser.values(setOption);
+    study.typed << QStringLiteral("vct-bench");
     for (int i = 1; i < argc; ++i)
-        typed << shellQuote(QString::fromLocal8Bit(argv[i]));
-    const auto writeStudy = [&](QString* problem) {
-        QString header = QStringLiteral(
-            "`%1`\n\nReference: %2. VCT: %3 point(s) of `%4`, median of %5 full frame(s) after a warm-up, at "
-            "%6×%7. Path tracer: %8 spp, up to %9 bounces, seeds from %10.")
-                             .arg(typed.join(QLatin1Char(' ')), referenceDescription)
-                             .arg(vctJobs)
-                             .arg(parser.value(sweepOption))
-                             .arg(frames)
-                             .arg(width)
-                             .arg(height)
-                             .arg(sppListText(curveSpp))
-                             .arg(maxBounces)
-                             .arg(seed + 1);
-        QJsonObject study;
-        study[QStringLiteral("scene")] = sceneSpec;
-        study[QStringLiteral("header")] = header;
-        return files::AtomicFile::write(
-            QDir(pointsDir).filePath(kStudyFile), QJsonDocument(study).toJson().toStdString(), problem);
-    };
-
-    if (parser.isSet(emitOption)) {
-        QStringList common { QCoreApplication::applicationFilePath(), QStringLiteral("accuracy"),
-            absoluteIfFile(sceneSpec) };
-        if (parser.isSet(cameraOption))
-            common << QStringLiteral("--camera") << absoluteIfFile(parser.value(cameraOption));
-        if (parser.isSet(lightsOption))
-            common << QStringLiteral("--lights") << absoluteIfFile(parser.value(lightsOption));
-        common << QStringLiteral("--width") << QString::number(width) << QStringLiteral("--height")
-               << QString::number(height) << QStringLiteral("--sweep")
-               << absoluteIfFile(parser.value(sweepOption)) << QStringLiteral("--reference")
-               << absoluteIfFile(referencePath) << QStringLiteral("--frames") << QString::number(frames);
-        for (const QString& assignment : parser.values(setOption))
-            common << QStringLiteral("--set") << assignment;
-        if (parser.isSet(glOption))
-            common << QStringLiteral("--gl") << parser.value(glOption);
-        common << QStringLiteral("--curve-spp") << sppListText(curveSpp) << QStringLiteral("--seed")
-               << QString::number(seed) << QStringLiteral("--max-bounces") << QString::number(maxBounces);
-        if (parser.isSet(threadsOption))
-            common << QStringLiteral("--threads") << QString::number(tracerSettings.threads);
-        QStringList quoted;
-        for (const QString& word : common)
-            quoted << shellQuote(word);
-        const QString prefix = quoted.join(QLatin1Char(' '));
-        const QString pointsOut = shellQuote(QFileInfo(pointsDir).absoluteFilePath());
-        for (int k = 0; k < jobs; ++k)
-            std::printf("%s --only-point %d --out %s\n", qPrintable(prefix), k, qPrintable(pointsOut));
-        if (!writeStudy(&error))
-            return fail(3, error);
-        std::fprintf(stderr,
-            "vct-bench accuracy: %d jobs (%d VCT points, %zu path-tracer points); when they are done:\n  %s "
-            "accuracy %s --merge %s\n",
-            jobs, vctJobs, curveSpp.size(), qPrintable(shellQuote(QCoreApplication::applicationFilePath())),
-            qPrintable(shellQuote(sceneSpec)), qPrintable(shellQuote(QFileInfo(outDir).absoluteFilePath())));
-        return 0;
-    }
-
-    // Measuring: this process runs one job (--only-point) or all of them and merges.
-    std::vector<int> toRun;
-    if (onlyPoint >= 0) {
-        toRun.push_back(onlyPoint);
-    } else {
-        for (const QString& stale : QDir(pointsDir).entryList({ QStringLiteral("point-*.csv") }, QDir::Files))
-            QFile::remove(QDir(pointsDir).filePath(stale));
-        for (int k = 0; k < jobs; ++k)
-            toRun.push_back(k);
-        if (!writeStudy(&error))
-            return fail(3, error);
-    }
-
-    std::unique_ptr<render::HeadlessContext> context;
-    std::unique_ptr<render::Renderer> renderer;
-    const AccuracyBenchmark benchmark(reference);
-    for (int k : toRun) {
-        std::vector<std::string> warnings;
-        AccuracyRow row;
-        try {
-            if (k < vctJobs) {
-                if (!renderer) {
-                    std::string contextError;
-                    context = render::HeadlessContext::createPreferring(
-                        parser.value(glOption).toStdString(), parser.isSet(glOption), contextError);
-                    if (!context)
-                        return fail(2, QString::fromStdString(contextError));
-                    renderer = std::make_unique<render::Renderer>(context->procAddressFunction());
-                    renderer->setSettings(sweep.points()[std::size_t(k)].settings);
-                    renderer->setScene(scene);
-                }
-                row = benchmark.measureVct(
-                    *renderer, camera, sweep.points()[std::size_t(k)], frames, warnings);
-                row.machine = context->description();
-            } else {
-                const std::size_t c = std::size_t(k - vctJobs);
-                render::ReferenceSettings settings = tracerSettings;
-                settings.seed
-                    = seed + 1 + c; // independent of the reference's noise and of the other curve points
-                row = benchmark.measurePathTracer(scene, camera, curveSpp[c], settings, warnings);
-            }
-        } catch (const std::exception& e) {
-            return fail(3, QStringLiteral("point %1: %2").arg(k).arg(QString::fromUtf8(e.what())));
-        }
-        row.point = k;
-        row.jobs = jobs;
-        row.loadAverage = loadAverage();
-        for (const std::string& warning : warnings)
-            std::fprintf(stderr, "vct-bench accuracy: warning: %s\n", warning.c_str());
-        std::fprintf(stderr, "  [%d/%d] %-36s %9.1f ms  rel. MSE %.4f  PSNR %.2f dB  (load %.1f)\n", k + 1,
-            jobs, row.label.c_str(), row.timeMs(), row.relMse, row.psnr, row.loadAverage);
-        if (!files::AtomicFile::write(
-                QDir(pointsDir).filePath(pointFileName(k)), AccuracyCsv::write({ row }), &error))
-            return fail(3, error);
-    }
-    if (onlyPoint >= 0)
-        return 0;
-    return merge(outDir, outDir, QString());
+        study.typed << shellQuote(QString::fromLocal8Bit(argv[i]));
+    study.scene = std::move(scene);
+    study.camera = camera;
+    study.width = width;
+    study.height = height;
+    study.explicitSize = explicitSize;
+    study.frames = frames;
+    study.sweep = std::move(sweep);
+    study.curveSpp = curveSpp;
+    study.seed = seed;
+    study.maxBounces = maxBounces;
+    study.tracerSettings = tracerSettings;
+    study.threadsGiven = parser.isSet(threadsOption);
+    study.glBackend = parser.value(glOption);
+    study.glExplicit = parser.isSet(glOption);
+    study.referenceFile = parser.isSet(referenceOption) ? parser.value(referenceOption) : QString();
+    study.referenceSpp = referenceSpp;
+    study.vctJobs = vctJobs;
+    study.jobs = jobs;
+    study.onlyPoint = onlyPoint;
+    study.outDir = outDir;
+    study.pointsDir = pointsDir;
+    if (const int failed = loadReference(study))
+        return failed;
+    return parser.isSet(emitOption) ? emitJobs(study) : measure(study);
 }
 
 } // namespace vct::cli
