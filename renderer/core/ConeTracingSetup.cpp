@@ -6,6 +6,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -29,7 +30,7 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uMaxLevel", float(v.frame.levelCount() - 1));
     program.set("uStepFactor", settings.stepFactor);
     program.set("uMaxDistance", maxDistance);
-    program.set("uConeOffset", settings.coneOffsetVoxels * voxel);
+    program.set("uConeOffset", coneOffsetMetres(frame));
     program.set("uConeCount", frame.diffuseCones.size());
     program.set("uCones", cones);
     program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
@@ -37,6 +38,12 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     v.coneRadiance().bindUnit(5);
     if (anisotropic)
         v.coneDirectional().bindUnit(6);
+}
+
+float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame)
+{
+    const VoxelGridFrame& grid = frame.voxels.frame;
+    return frame.settings.coneOffsetVoxels * std::max(grid.voxelSize(), grid.extent / float(kOffsetGrid));
 }
 
 ConeTraceKey ConeTraceKey::of(const FrameContext& frame)

@@ -16,6 +16,14 @@ class ConeTracingSetup {
 public:
     static void apply(const gl::Program& program, const FrameContext& frame, bool anisotropic);
     /**
+     * How far along the normal cones (and the area lights' shadow cones) start, metres: cone_offset voxels,
+     * and on a grid finer than kOffsetGrid^3 as far as on that one. On finer grids a start a fixed number of
+     * voxels out lets the first, finest samples find the surface being left: the reference Cornell boxes read
+     * 10% too bright at 256^3 (docs/ACCURACY.md, "Finer grids").
+     */
+    static float coneOffsetMetres(const FrameContext& frame);
+    static constexpr int kOffsetGrid = 128;
+    /**
      * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to
      * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
      * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.

@@ -1,5 +1,6 @@
 #include "passes/AreaLightPass.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 
@@ -35,7 +36,7 @@ void AreaLightPass::execute(FrameContext& frame)
     program.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     program.set("uCameraPosition", frame.camera.position);
     program.set("uPixelToRay", frame.pixelToRay);
-    program.set("uAreaShadowOffset", frame.settings.coneOffsetVoxels * frame.voxels.frame.voxelSize());
+    program.set("uAreaShadowOffset", ConeTracingSetup::coneOffsetMetres(frame));
     applyAreaLightUniforms(program, frame);
     s.surface.bindUnit(1);
     m_emptyVao.bind();

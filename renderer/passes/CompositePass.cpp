@@ -1,5 +1,6 @@
 #include "passes/CompositePass.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/PixelClass.h"
@@ -80,7 +81,7 @@ void CompositePass::execute(FrameContext& frame)
         program.set("uAreaDivisor", s.areaDivisor);
         // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
         program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
-        program.set("uAreaShadowOffset", frame.settings.coneOffsetVoxels * frame.voxels.frame.voxelSize());
+        program.set("uAreaShadowOffset", ConeTracingSetup::coneOffsetMetres(frame));
         applyAreaLightUniforms(program, frame);
         glStencilFunc(GL_EQUAL, GLint(pixelClass), 0xFF);
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -131,8 +131,8 @@ const std::map<std::string, Field>& fields()
             "trace the area lights' shadow cones at 1/N resolution per axis: 1, 2 or 4");
         t["specular_res"] = makeField(&RenderSettings::specularDivisor,
             "trace the specular cone at 1/N resolution per axis: 1, 2, 4 or 8");
-        t["cone_offset"]
-            = makeField(&RenderSettings::coneOffsetVoxels, "cone origin offset along the normal, voxels");
+        t["cone_offset"] = makeField(&RenderSettings::coneOffsetVoxels,
+            "cone origin offset along the normal, voxels (finer grids than 128^3 keep its distance)");
         t["direct"] = makeField(&RenderSettings::direct, "direct light (on/off)");
         t["indirect_diffuse"]
             = makeField(&RenderSettings::indirectDiffuse, "indirect diffuse cones (on/off)");

@@ -65,7 +65,9 @@ struct RenderSettings {
     float specularApertureDeg = 15.0f; ///< Narrowest specular cone; glossier lobes are clamped to it.
     float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
     float maxDistance = -1.0f; ///< Cone length in metres; negative = the grid's diagonal.
-    float coneOffsetVoxels = 1.5f; ///< Cone origins start this many voxels along the normal.
+    /// Cone origins start this many voxels along the normal; on grids finer than 128^3 as far as on that grid
+    /// (ConeTracingSetup::coneOffsetMetres).
+    float coneOffsetVoxels = 1.5f;
     /// Indirect light is traced for one pixel in divisor x divisor (1, 2 or 4) and upsampled with depth- and
     /// normal-aware weights: indirect light varies slowly, and the cones are most of a frame's cost.
     /// Quarter resolution (4) costs no measurable accuracy against half or full (within 1.5%,
