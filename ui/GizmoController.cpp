@@ -173,7 +173,20 @@ void GizmoController::apply(const QPointF& at, bool snap)
     if (mode == GizmoMode::Move) {
         light.position += move;
     } else if (mode == GizmoMode::Rotate) {
-        light.direction = turn(m_pressed.axis(m_part), turnDeg) * light.direction;
+        const glm::mat3 r = turn(m_pressed.axis(m_part), turnDeg);
+        glm::vec3 width, height, front;
+        const bool hasAxes = light.isSurface() && light.surfaceLight().axes(width, height, front);
+        light.direction = r * light.direction;
+        // A rect turns whole: its spin about its own normal (areaRotationDeg, measured from the horizontal
+        // across its direction) follows the turned width axis, so it does not swing about as it faces anew.
+        render::SurfaceLight facing = light.surfaceLight();
+        facing.rotationDeg = 0.0f;
+        glm::vec3 horizontal, across, newFront;
+        if (hasAxes && facing.axes(horizontal, across, newFront)) {
+            const glm::vec3 turnedWidth = r * width;
+            light.areaRotationDeg
+                = glm::degrees(std::atan2(glm::dot(turnedWidth, across), glm::dot(turnedWidth, horizontal)));
+        }
     } else if (mode == GizmoMode::Scale) {
         const auto scaled
             = [factor](float size) { return std::clamp(size * factor, kMinLightSize, kMaxLightSize); };

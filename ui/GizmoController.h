@@ -23,7 +23,7 @@ namespace vct::ui {
  * their own axes about that middle, the translation adjusted so the middle stays put. Lights: point, spot,
  * rect and disk lights move; spots, rects, disks and suns turn (their direction; a sun's gizmo sits in the
  * middle of the scene); rects and disks scale their size as a whole, point and spot lights with a size their
- * radius. A rect's spin about its own normal stays the Light panel's Rotation.
+ * radius. A rect turns whole: its Rotation (spin about its normal) follows its width axis.
  */
 class GizmoController {
 public:

@@ -10,6 +10,8 @@
 #include "document/Document.h"
 #include "scene/CameraBasis.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
@@ -380,6 +382,45 @@ void GizmoTest::lightsTakeTheHandlesTheirKindHas()
     QVERIFY(shownHandles().empty());
     viewport->setGizmoMode(ui::GizmoMode::Scale);
     QVERIFY(shownHandles().empty());
+    // A rect light turns whole: its width axis turns with its direction (its spin about its normal follows).
+    doc::LightNode rect;
+    rect.type = doc::LightType::Rect;
+    rect.name = QStringLiteral("Rect");
+    rect.position = original.position - glm::vec3(0.0f, 0.1f, 0.0f);
+    rect.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    rect.areaWidth = 0.4f;
+    rect.areaHeight = 0.2f;
+    rect.areaRotationDeg = 20.0f;
+    document->addLight(rect);
+    const int rectIndex = int(document->state().lights.size()) - 1;
+    viewport->setSelectedLight(rectIndex);
+    viewport->setGizmoMode(ui::GizmoMode::Rotate);
+    nextFrame();
+    const ui::TransformGizmo::Handle* xRing = handleOf(shownHandles(), 0);
+    QVERIFY(xRing);
+    const int n = int(xRing->shape.size());
+    const QPointF grab = xRing->shape[n / 8];
+    const QPointF onward = xRing->shape[n / 8 + 1] - grab;
+    const QPoint from = grab.toPoint();
+    const QPoint to = from + (onward / std::hypot(onward.x(), onward.y()) * 40.0).toPoint();
+    const float turnDeg = viewport->overlay()->gizmo().rotationDeg(0, from, to);
+    glm::vec3 width, height, front;
+    QVERIFY(document->state().lights[std::size_t(rectIndex)].surfaceLight().axes(width, height, front));
+    drag(from, to);
+    const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(turnDeg), glm::vec3(1, 0, 0)));
+    glm::vec3 turnedWidth, turnedHeight, turnedFront;
+    QVERIFY(document->state().lights[std::size_t(rectIndex)].surfaceLight().axes(
+        turnedWidth, turnedHeight, turnedFront));
+    qInfo("rect turned %.1f degrees about X: width axis %s -> %s", double(turnDeg),
+        qPrintable(test::describe(width)), qPrintable(test::describe(turnedWidth)));
+    QVERIFY(std::abs(turnDeg) > 5.0f);
+    QVERIFY2(glm::length(turnedFront - turn * front) < 1e-4f, qPrintable(test::describe(turnedFront)));
+    QVERIFY2(glm::length(turnedWidth - turn * width) < 1e-4f, qPrintable(test::describe(turnedWidth)));
+    document->undoStack()->undo(); // the turn
+    document->undoStack()->undo(); // the new light
+    viewport->setSelectedLight(0);
+    viewport->setGizmoMode(ui::GizmoMode::Scale);
+
     // Choosing a node gives the handles to it; deselecting it does not bring the light's back.
     document->setSelectedNode(shortBox());
     QCOMPARE(int(shownHandles().size()), 4);
