@@ -263,9 +263,7 @@ void Renderer::setMeshVisible(std::size_t mesh, bool visible)
     // layer too) is what a new scene would get, minus the upload.
     ++m_state->versions.staticGeometry;
     ++m_state->versions.dynamicGeometry;
-    if (m_state->scene->scene()
-            .materials[std::size_t(m_state->scene->scene().meshes[mesh].material)]
-            .isEmissive()) {
+    if (m_state->scene->materialOf(mesh).isEmissive()) {
         ++m_state->versions.lightPlacement;
         ++m_state->versions.lightValues;
     }
