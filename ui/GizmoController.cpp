@@ -95,8 +95,11 @@ GizmoController::Target GizmoController::target() const
 
 TransformGizmo GizmoController::gizmo(const ViewProjection& view) const
 {
+    // Without handles nothing is looked up (the target's bounds read every vertex of its mesh).
+    if (m_mode == GizmoMode::None)
+        return {};
     const Target t = target();
-    if ((t.node < 0 && t.light < 0) || t.parts == 0 || m_mode == GizmoMode::None)
+    if ((t.node < 0 && t.light < 0) || t.parts == 0)
         return {};
     // Moving and turning go along the world's axes; scaling along the object's own, the ones its scale
     // factors belong to.
