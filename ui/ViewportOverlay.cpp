@@ -92,36 +92,37 @@ std::optional<QPointF> ViewportOverlay::project(const glm::vec3& world) const
     return ViewProjection { m_document->state().camera, QRectF(m_image) }.toScreen(world);
 }
 
+std::vector<std::pair<int, QPointF>> ViewportOverlay::lightIcons() const
+{
+    std::vector<std::pair<int, QPointF>> icons;
+    if (!m_document)
+        return icons;
+    const std::vector<doc::LightNode>& lights = m_document->state().lights;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].type != doc::LightType::Directional)
+            if (const std::optional<QPointF> p = project(lights[i].position))
+                icons.emplace_back(int(i), *p);
+    return icons;
+}
+
 QList<QPointF> ViewportOverlay::lightIconPositions() const
 {
     QList<QPointF> positions;
-    if (!m_document)
-        return positions;
-    for (const doc::LightNode& light : m_document->state().lights)
-        if (light.type != doc::LightType::Directional)
-            if (const std::optional<QPointF> p = project(light.position))
-                positions << *p;
+    for (const auto& [light, position] : lightIcons())
+        positions << position;
     return positions;
 }
 
 int ViewportOverlay::lightAt(const QPointF& point, double radius) const
 {
-    if (!m_document)
-        return -1;
     int nearest = -1;
     double best = radius;
-    const std::vector<doc::LightNode>& lights = m_document->state().lights;
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        if (lights[i].type == doc::LightType::Directional)
-            continue;
-        if (const std::optional<QPointF> p = project(lights[i].position)) {
-            const double distance = std::hypot(p->x() - point.x(), p->y() - point.y());
-            if (distance <= best) {
-                best = distance;
-                nearest = int(i);
-            }
+    for (const auto& [light, position] : lightIcons())
+        if (const double distance = std::hypot(position.x() - point.x(), position.y() - point.y());
+            distance <= best) {
+            best = distance;
+            nearest = light;
         }
-    }
     return nearest;
 }
 

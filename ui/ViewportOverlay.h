@@ -15,6 +15,8 @@
 #include <QWidget>
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace vct::doc {
 class Document;
@@ -59,6 +61,8 @@ protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
+    /** (light index, where its icon goes) for each light with an icon in front of the camera. */
+    std::vector<std::pair<int, QPointF>> lightIcons() const;
     /** `world` on screen, or nothing when it is behind the camera. */
     std::optional<QPointF> project(const glm::vec3& world) const;
 

@@ -19,6 +19,8 @@
 #include <QOpenGLContext>
 #include <QWheelEvent>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -33,6 +35,8 @@ void* qtProcAddress(const char* name)
 }
 
 constexpr float kOrbitDegreesPerPixel = 0.3f;
+/// The keys that fly while the right button is held.
+constexpr std::array kFlyKeys { Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E };
 /// Wheel steps further apart than this are separate zoom gestures for View > Undo view.
 constexpr int kWheelGestureMs = 400;
 
@@ -465,7 +469,7 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     }
     if (event->button() == Qt::RightButton) {
         // Letting go of the right button ends the flight; the keys fly again only with the button down.
-        for (const int key : { Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E })
+        for (const int key : kFlyKeys)
             m_flyKeys.remove(key);
         m_flyTimer.stop();
     }
@@ -581,9 +585,7 @@ void ViewportWidget::keyReleaseEvent(QKeyEvent* event)
 {
     if (!event->isAutoRepeat())
         m_flyKeys.remove(event->key());
-    if (!m_flyKeys.contains(Qt::Key_W) && !m_flyKeys.contains(Qt::Key_A) && !m_flyKeys.contains(Qt::Key_S)
-        && !m_flyKeys.contains(Qt::Key_D) && !m_flyKeys.contains(Qt::Key_Q)
-        && !m_flyKeys.contains(Qt::Key_E)) {
+    if (!flyKeyHeld()) {
         m_flyTimer.stop();
         endGestureIfIdle();
     }
@@ -614,12 +616,14 @@ void ViewportWidget::resizeEvent(QResizeEvent* event)
     m_overlay->setGeometry(rect());
 }
 
+bool ViewportWidget::flyKeyHeld() const
+{
+    return std::any_of(kFlyKeys.begin(), kFlyKeys.end(), [this](int key) { return m_flyKeys.contains(key); });
+}
+
 void ViewportWidget::startFlying()
 {
-    bool flyKey = false;
-    for (const int key : { Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E })
-        flyKey = flyKey || m_flyKeys.contains(key);
-    if (!flyKey || m_flyTimer.isActive())
+    if (!flyKeyHeld() || m_flyTimer.isActive())
         return;
     beginGesture();
     // A quarter of the geometry's diagonal per second: the room is crossed in a few seconds whatever its

@@ -156,6 +156,7 @@ private:
     void refreshGizmo();
     /** Starts flying if a fly key is held while the right button looks around. */
     void startFlying();
+    bool flyKeyHeld() const;
 
     doc::Document* m_document;
     std::unique_ptr<render::Renderer> m_renderer;
