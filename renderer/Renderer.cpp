@@ -5,6 +5,7 @@
 #include "core/ConeSet.h"
 #include "core/FrameContext.h"
 #include "core/Pipeline.h"
+#include "core/ResourceNames.h"
 #include "core/ShaderLibrary.h"
 #include "core/VoxelMipBuilder.h"
 #include "debug/ConeSampleCounter.h"
@@ -59,20 +60,25 @@ namespace {
 // The box-filtered levels of the volume cones trace, for the voxel inspector, readVoxels and the NaN check.
 // With anisotropic mips the volume has level 0 only (cones read the directional chains above it), so they are
 // made in VoxelVolume::inspectionMips when something looks, and kept while the light stays the same.
-void ensureInspectionMips(
-    const ShaderLibrary& shaders, VoxelMipBuilder& builder, VoxelVolume& v, bool dynamicMeshes)
+void ensureInspectionMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder, ResourceTable& resources,
+    VoxelVolume& v, bool dynamicMeshes)
 {
     const gl::Texture& source = v.coneRadiance();
     const int levels = v.frame.levelCount();
-    if (!source || source.levels() == levels) {
-        v.inspectionMips = gl::Texture();
-        return;
-    }
+    const bool needed = source && source.levels() != levels;
+    const auto make = [&](bool building) {
+        // The cell marks are scratch for building the levels: they go once the levels are built.
+        resources.apply("voxel inspector",
+            { { resource::kInspectionMips, ResourceGroup::Voxels, &v.inspectionMips,
+                  needed ? gl::TextureDesc::volume(GL_RGBA16F, source.width(), levels) : gl::TextureDesc {} },
+                { resource::kInspectionCellMarks, ResourceGroup::Voxels, &builder.marks(),
+                    building ? VoxelMipBuilder::marksDesc(v.frame.resolution) : gl::TextureDesc {} } });
+    };
+    make(false);
     const std::uint64_t key = v.coneRadianceKey();
-    if (v.inspectionMips && v.inspectionMips.width() == source.width() && v.inspectionMipsKey == key)
+    if (!needed || (v.inspectionMips.serial() == v.inspectionMipsSerial && v.inspectionMipsKey == key))
         return;
-    if (!v.inspectionMips || v.inspectionMips.width() != source.width())
-        v.inspectionMips = gl::Texture::create3D(GL_RGBA16F, source.width(), levels);
+    make(true);
     const int side = source.width();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glCopyImageSubData(source.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.inspectionMips.id(), GL_TEXTURE_3D, 0, 0, 0,
@@ -80,7 +86,9 @@ void ensureInspectionMips(
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     builder.listCells(shaders, v.frame.resolution, levels, v.occupiedVoxels(dynamicMeshes));
     builder.buildBox(shaders, v.inspectionMips);
+    make(false);
     v.inspectionMipsKey = key;
+    v.inspectionMipsSerial = v.inspectionMips.serial();
 }
 
 std::unique_ptr<Pipeline> makePipeline()
@@ -100,50 +108,14 @@ std::unique_ptr<Pipeline> makePipeline()
     return std::make_unique<Pipeline>(std::move(passes));
 }
 
-// One grid of traced pixels: its targets for one value and the guide, and its stencil, in one framebuffer.
-void makeTracedGrid(int width, int height, int divisor, gl::Texture& values, gl::Texture& guide,
-    gl::Texture& stencil, gl::Framebuffer& target)
-{
-    const int w = (width + divisor - 1) / divisor, h = (height + divisor - 1) / divisor;
-    values = gl::Texture::create2D(GL_RGBA16F, w, h);
-    guide = gl::Texture::create2D(GL_RGBA32F, w, h);
-    guide.setFilter(GL_NEAREST, GL_NEAREST);
-    stencil = gl::Texture::create2D(GL_DEPTH24_STENCIL8, w, h);
-    target = gl::Framebuffer::create();
-    target.attachColor(0, values);
-    target.attachColor(1, guide);
-    target.attachDepth(stencil);
-    target.finish(2);
-}
-
+// The output's size and its traced grids' divisors; the passes that draw into them make the targets.
 void resizeScreen(ScreenTargets& s, int width, int height, int divisor, int specularDivisor, int areaDivisor)
 {
-    if (s.width == width && s.height == height && s.indirectDivisor == divisor
-        && s.specularDivisor == specularDivisor && s.areaDivisor == areaDivisor && s.final)
-        return;
-    s.areaDivisor = areaDivisor;
     s.width = width;
     s.height = height;
     s.indirectDivisor = divisor;
     s.specularDivisor = specularDivisor;
-    s.surface = gl::Texture::create2D(GL_RGBA32UI, width, height);
-    s.surface.setFilter(GL_NEAREST, GL_NEAREST);
-    s.depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
-    s.gbuffer = gl::Framebuffer::create();
-    s.gbuffer.attachColor(0, s.surface);
-    s.gbuffer.attachDepth(s.depth);
-    s.gbuffer.finish(1);
-    makeTracedGrid(
-        width, height, divisor, s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectTarget);
-    makeTracedGrid(
-        width, height, specularDivisor, s.specular, s.specularGuide, s.specularStencil, s.specularTarget);
-    makeTracedGrid(
-        width, height, areaDivisor, s.areaShadow, s.areaShadowGuide, s.areaShadowStencil, s.areaShadowTarget);
-    s.final = gl::Texture::create2D(GL_RGBA32F, width, height);
-    s.finalTarget = gl::Framebuffer::create();
-    s.finalTarget.attachColor(0, s.final);
-    s.finalTarget.attachDepth(s.depth);
-    s.finalTarget.finish(1);
+    s.areaDivisor = areaDivisor;
 }
 
 std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& size)
@@ -209,11 +181,6 @@ Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<Shade
     gl::DebugOutput::enable();
     m_state->shaders = std::move(shaders);
     m_state->pipeline = makePipeline();
-    // Samplers of every type must have a texture even before the shadow pass has run once.
-    m_state->shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, 1, 1);
-    m_state->shadows.directionalDepth = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, 1, 1, 1);
-    m_state->shadows.pointDepth.setDepthComparison();
-    m_state->shadows.directionalDepth.setDepthComparison();
     m_state->scene = std::make_unique<GpuScene>(Scene {});
 }
 
@@ -360,14 +327,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor,
         m_settings.areaShadowDivisor);
 
-    FrameContext frame { *st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen,
-        st.cones, st.staticMaterialEdits, camera, glm::mat4(1.0f), glm::mat4(1.0f), glm::mat3(1.0f),
-        st.coneSampleCounter.get() };
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
-    frame.view = matrices.view;
-    frame.projection = matrices.projection;
-    frame.pixelToRay = pixelToRay(camera, width, height);
-    frame.bounceIterationsPerFrame = st.bounceIterationsPerFrame;
+    FrameContext frame { *st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen,
+        st.cones, st.staticMaterialEdits, camera, matrices.view, matrices.projection,
+        pixelToRay(camera, width, height), st.coneSampleCounter.get(), st.bounceIterationsPerFrame,
+        FrameShape {}, &st.pipeline->resources() };
     frame.shape = FrameShape::of(frame);
 
     if (st.coneSampleCounter)
@@ -380,7 +344,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         && (st.voxels.inspectionMipsKey != st.voxels.coneRadianceKey()
             || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
         st.voxels.inspectionMips = gl::Texture();
-    stats.voxelBytes = st.voxels.byteSize();
+    stats.voxelBytes = st.pipeline->resources().byteSize(ResourceGroup::Voxels);
     if (st.voxels.occupiedCountStale) {
         // The static list names every static voxel, the dynamic one those only moving objects reach (static
         // meshes are drawn first, and a list takes a voxel from the first fragment to reach it): together,
@@ -425,8 +389,8 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
 
 const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
 {
-    ensureInspectionMips(
-        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
+    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
+        m_state->scene->hasDynamicMeshes());
     return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
 }
 
@@ -470,9 +434,9 @@ void Renderer::setBounceIterationsPerFrame(int iterations)
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
-    ensureInspectionMips(
-        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
-    return m_state->finiteCheck.run(*m_state->shaders, m_state->screen, m_state->voxels);
+    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
+        m_state->scene->hasDynamicMeshes());
+    return m_state->finiteCheck.run(*m_state->shaders, m_state->pipeline->resources());
 }
 
 int Renderer::voxelLevelCount() const
@@ -500,8 +464,8 @@ RadianceImage Renderer::readFrame() const
 
 std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
 {
-    ensureInspectionMips(
-        *m_state->shaders, m_state->boxMips, m_state->voxels, m_state->scene->hasDynamicMeshes());
+    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
+        m_state->scene->hasDynamicMeshes());
     const VoxelVolume& v = m_state->voxels;
     static const char* const kDirectional[6]
         = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
@@ -522,12 +486,12 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
         size = std::max(1, v.frame.resolution >> level);
         return std::vector<float>(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4, 0.0f);
     }
-    const gl::Texture* texture = channel == "albedo" ? &v.albedo
-        : channel == "normal"                        ? &v.normal
-        : channel == "emission"                      ? &v.emission
-        : channel == "radiance"                      ? &v.radiance
-        : channel == "bounced"                       ? &v.bounced
-                                                     : nullptr;
+    // The channels are the voxel textures of those names in the resource table.
+    const gl::Texture* texture = nullptr;
+    for (const char* name : { resource::kAlbedo, resource::kNormal, resource::kEmission, resource::kRadiance,
+             resource::kBounced })
+        if (channel == name)
+            texture = m_state->pipeline->resources().find(name);
     if (!texture || !*texture)
         throw std::invalid_argument(
             "no voxel channel '" + channel + "' (albedo, normal, emission, radiance, bounced)");
@@ -556,11 +520,11 @@ glm::vec3 Renderer::gridOrigin() const
 }
 std::size_t Renderer::voxelBytes() const
 {
-    return m_state->voxels.byteSize();
+    return m_state->pipeline->resources().byteSize(ResourceGroup::Voxels);
 }
 std::vector<VoxelTextureMemory> Renderer::voxelMemory() const
 {
-    return describeVoxelMemory(m_state->voxels);
+    return describeVoxelMemory(m_state->pipeline->resources());
 }
 
 void Renderer::setConeSampleCounting(bool enabled)

@@ -4,6 +4,7 @@
 #include "core/FrameResources.h"
 #include "core/FrameShape.h"
 #include "core/GpuScene.h"
+#include "core/ResourceTable.h"
 #include "core/ShaderLibrary.h"
 #include "scene/Camera.h"
 #include "scene/RenderSettings.h"
@@ -60,6 +61,9 @@ struct FrameContext {
     int bounceIterationsPerFrame = 0;
     /// What the frame calls for, decided once before the passes plan (FrameShape::of).
     FrameShape shape;
+    /// Every texture made so far, by name (core/ResourceNames.h): how a pass reads what another keeps as its
+    /// own member rather than in VoxelVolume or ScreenTargets.
+    const ResourceTable* resources = nullptr;
 };
 
 } // namespace vct::render

@@ -2,27 +2,17 @@
 
 namespace vct::render {
 
-std::vector<VoxelVolume::NamedTexture> VoxelVolume::textures() const
+std::vector<TextureSlot> ScreenTargets::tracedGrid(const char* const (&names)[3], gl::Texture& values,
+    gl::Texture& guide, gl::Texture& stencil, int divisor, bool needed) const
 {
-    return { { "albedo", &albedo }, { "normal", &normal }, { "emission", &emission },
-        { "radiance", &radiance }, { "opacity", &opacity },
-        { "radiance, directional (+x -x +y -y +z -z)", &directional }, { "bounced", &bounced },
-        { "bounced, directional (+x -x +y -y +z -z)", &bouncedDirectional },
-        { "bounce cells", &bounceIrradiance }, { "bounce cells, back faces", &bounceIrradianceBack },
-        { "bounce cell normals", &bounceCellNormal }, { "irradiance cache", &irradiance },
-        { "irradiance cache, back faces", &irradianceBack }, { "irradiance cell normals", &irradianceNormal },
-        { "irradiance cells gathered", &irradianceRequested },
-        { "box levels for inspection", &inspectionMips } };
-}
-
-std::size_t VoxelVolume::byteSize() const
-{
-    std::size_t total = 0;
-    // From the textures' own sizes: asked every frame for the stats, so no GL queries (describeVoxelMemory
-    // adds GL's description of each level, for the benchmarks and tests).
-    for (const NamedTexture& named : textures())
-        total += *named.texture ? named.texture->byteSize() : 0;
-    return total;
+    using gl::TextureDesc;
+    const int w = tracedSize(width, divisor), h = tracedSize(height, divisor);
+    const auto desc
+        = [&](GLenum format) { return needed ? TextureDesc::plane(format, w, h) : TextureDesc {}; };
+    return { { names[0], ResourceGroup::Screen, &values, desc(GL_RGBA16F) },
+        { names[1], ResourceGroup::Screen, &guide,
+            needed ? desc(GL_RGBA32F).sampled(TextureDesc::Sampling::Nearest) : TextureDesc {} },
+        { names[2], ResourceGroup::Screen, &stencil, desc(GL_DEPTH24_STENCIL8) } };
 }
 
 } // namespace vct::render

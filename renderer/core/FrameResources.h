@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/OccupiedCellList.h"
+#include "core/ResourceTable.h"
 #include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
 #include "gl/Framebuffer.h"
@@ -86,6 +87,7 @@ struct VoxelVolume {
     /// ensureInspectionMips) for the version in inspectionMipsKey.
     gl::Texture inspectionMips;
     std::uint64_t inspectionMipsKey = 0;
+    std::uint64_t inspectionMipsSerial = 0; ///< the texture inspectionMipsKey's levels were built in
     /// The occupied voxels as the voxelizer listed them while drawing: every static voxel as of the last full
     /// static rebuild (a material edit moves no geometry, so the list stays whole) and every dynamic voxel as
     /// of the last dynamic rewrite. Together they name every occupied voxel, those both layers reach twice.
@@ -105,17 +107,6 @@ struct VoxelVolume {
     std::size_t occupiedCount = 0;
     bool occupiedCountStale = false;
 
-    /** One row of textures(): a voxel texture and the name tools show it by. */
-    struct NamedTexture {
-        const char* name;
-        const gl::Texture* texture;
-    };
-    /**
-     * Every voxel texture, allocated or not, in one fixed order: the one list that memory accounting
-     * (describeVoxelMemory, byteSize), the NaN check and the benchmarks' tables loop over.
-     */
-    std::vector<NamedTexture> textures() const;
-    std::size_t byteSize() const;
     /** The volume cones trace through: after the second bounce when there is one, else first-bounce radiance.
      */
     const gl::Texture& coneRadiance() const { return bounced ? bounced : radiance; }
@@ -176,7 +167,16 @@ struct ScreenTargets {
     gl::Texture areaShadowStencil;
     gl::Framebuffer areaShadowTarget;
     gl::Texture final; ///< rgba32f: linear radiance of the frame.
-    gl::Framebuffer finalTarget; ///< with the g-buffer's depth and stencil, read only</
+    gl::Framebuffer finalTarget; ///< with the g-buffer's depth and stencil, read only
+
+    /** The side of a grid of traced pixels, one per divisor x divisor block (rounded up). */
+    static int tracedSize(int side, int divisor) { return (side + divisor - 1) / divisor; }
+    /**
+     * The three textures of one grid of traced pixels, one per @p divisor block: its values (rgba16f), guide
+     * (rgba32f, fetched) and pixel classes (depth24 + stencil8), named by @p names; empty when not @p needed.
+     */
+    std::vector<TextureSlot> tracedGrid(const char* const (&names)[3], gl::Texture& values,
+        gl::Texture& guide, gl::Texture& stencil, int divisor, bool needed) const;
 };
 
 } // namespace vct::render

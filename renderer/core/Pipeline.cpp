@@ -5,39 +5,16 @@
 
 namespace vct::render {
 
-const char* resourceName(Resource resource)
-{
-    switch (resource) {
-    case Resource::ShadowMaps:
-        return "shadow maps";
-    case Resource::VoxelMaterials:
-        return "voxel materials";
-    case Resource::VoxelRadiance:
-        return "voxel radiance";
-    case Resource::VoxelMips:
-        return "voxel mips";
-    case Resource::VoxelIrradiance:
-        return "voxel irradiance";
-    case Resource::GBuffer:
-        return "G-buffer";
-    case Resource::IndirectLight:
-        return "indirect light";
-    case Resource::FinalImage:
-        return "final image";
-    }
-    return "?";
-}
-
 Pipeline::Pipeline(std::vector<std::unique_ptr<RenderPass>> passes)
     : m_passes(std::move(passes))
 {
-    std::vector<Resource> written;
+    std::vector<std::string> written;
     for (const auto& pass : m_passes) {
         const PassDeclaration declaration = pass->declare();
-        for (Resource r : declaration.reads)
+        for (const std::string& r : declaration.reads)
             if (std::find(written.begin(), written.end(), r) == written.end())
-                throw std::logic_error(std::string("pass ") + pass->name() + " reads " + resourceName(r)
-                    + " before any pass writes it");
+                throw std::logic_error(
+                    std::string("pass ") + pass->name() + " reads " + r + " before any pass writes it");
         written.insert(written.end(), declaration.writes.begin(), declaration.writes.end());
         for (auto& set : m_timers)
             set.push_back(gl::TimerQuery::create());
@@ -58,7 +35,13 @@ FrameStats Pipeline::execute(FrameContext& frame)
     std::vector<gl::TimerQuery>& timers = m_timers[m_currentSet];
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
-        const PassDecision decision = pass.plan(frame);
+        PassDecision decision = pass.plan(frame);
+        if (prepareTextures(pass, frame) && decision.action != PassDecision::Action::Skip) {
+            // Its output went with the old textures.
+            pass.invalidate();
+            if (decision.action == PassDecision::Action::Reuse)
+                decision = { PassDecision::Action::Run, "its textures were made anew" };
+        }
         PassStats entry { pass.name(), "run", decision.reason, 0.0 };
         if (decision.action == PassDecision::Action::Run) {
             timers[i].begin();
@@ -88,6 +71,18 @@ FrameStats Pipeline::execute(FrameContext& frame)
         m_currentSet = 1 - m_currentSet;
     }
     return stats;
+}
+
+bool Pipeline::prepareTextures(RenderPass& pass, const FrameContext& frame)
+{
+    const std::vector<TextureSlot> slots = pass.textures(frame);
+    const PassDeclaration declaration = pass.declare();
+    for (const TextureSlot& slot : slots)
+        if (std::find(declaration.writes.begin(), declaration.writes.end(), slot.name)
+            == declaration.writes.end())
+            throw std::logic_error(
+                std::string("pass ") + pass.name() + " makes " + slot.name + " but does not declare it");
+    return m_resources.apply(pass.name(), slots);
 }
 
 void Pipeline::invalidate()

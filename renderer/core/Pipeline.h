@@ -2,6 +2,7 @@
 
 #include "core/FrameStats.h"
 #include "core/RenderPass.h"
+#include "core/ResourceTable.h"
 #include "gl/TimerQuery.h"
 
 #include <memory>
@@ -26,9 +27,16 @@ public:
     void setTimingReadback(TimingReadback readback);
     void invalidate();
     const std::vector<std::unique_ptr<RenderPass>>& passes() const { return m_passes; }
+    /** Every texture the passes make; tools outside the pipeline register theirs here too. */
+    ResourceTable& resources() { return m_resources; }
+    const ResourceTable& resources() const { return m_resources; }
 
 private:
+    /** Makes @p pass's textures what it asks for this frame; true when one was made anew. */
+    bool prepareTextures(RenderPass& pass, const FrameContext& frame);
+
     std::vector<std::unique_ptr<RenderPass>> m_passes;
+    ResourceTable m_resources;
     /// Two sets, so a frame can issue into one while the previous frame's results are read from the other.
     std::vector<gl::TimerQuery> m_timers[2];
     std::vector<bool> m_ranLastFrame;

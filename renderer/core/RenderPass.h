@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/ResourceTable.h"
+
 #include <string>
 #include <vector>
 
@@ -7,24 +9,14 @@ namespace vct::render {
 
 struct FrameContext;
 
-/** Named resources passes hand to each other; the pipeline checks each read follows its write. */
-enum class Resource {
-    ShadowMaps,
-    VoxelMaterials,
-    VoxelRadiance,
-    VoxelMips,
-    VoxelIrradiance,
-    GBuffer,
-    IndirectLight,
-    FinalImage
-};
-
-const char* resourceName(Resource resource);
-
-/** What a pass reads and writes. */
+/**
+ * What a pass reads and writes, by the textures' names in the resource table (core/ResourceNames.h). The
+ * pipeline rejects an order in which a read comes before any write, and a pass that makes a texture it does
+ * not declare it writes.
+ */
 struct PassDeclaration {
-    std::vector<Resource> reads;
-    std::vector<Resource> writes;
+    std::vector<std::string> reads;
+    std::vector<std::string> writes;
 };
 
 /** Whether a pass runs this frame, and why. */
@@ -45,10 +37,21 @@ public:
      * nothing: what a skipped pass frees, it frees in release().
      */
     virtual PassDecision plan(const FrameContext& frame) const = 0;
+    /**
+     * The textures this pass makes, every one of them every frame (in the same order), each with what this
+     * frame needs of it: an empty description frees it. The pipeline makes them so before execute(), also
+     * when the pass is skipped or reused; when one is made anew it calls invalidate() first, so the pass
+     * redoes its output. The names are among declare()'s writes.
+     */
+    virtual std::vector<TextureSlot> textures(const FrameContext& frame)
+    {
+        (void)frame;
+        return {};
+    }
     virtual void execute(FrameContext& frame) = 0;
     /**
-     * Called instead of execute() when plan() skips the pass: frees what it made for an effect the frame no
-     * longer needs (textures, cached state), so that switching an effect off gives its memory back.
+     * Called instead of execute() when plan() skips the pass: forgets state kept for an effect the frame no
+     * longer needs (its textures are freed by what textures() asks for).
      */
     virtual void release(FrameContext& frame) { (void)frame; }
     /** Forgets cached state so the next plan() runs the pass (after GPU resources were recreated). */

@@ -4,8 +4,22 @@
 #include "core/ShaderLibrary.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace vct::render {
+
+gl::TextureDesc VoxelMipBuilder::directionalDesc(int resolution, int levelCount)
+{
+    if (levelCount < 2)
+        return {};
+    return gl::TextureDesc::volumeStack(
+        GL_RGBA16F, std::max(1, resolution / 2), kDirectionalTiles, levelCount - 1);
+}
+
+gl::TextureDesc VoxelMipBuilder::marksDesc(int resolution)
+{
+    return gl::TextureDesc::volume(GL_R32UI, std::max(1, resolution / 2));
+}
 
 void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, int levels,
     const std::vector<const OccupiedCellList*>& occupied)
@@ -13,8 +27,8 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
     if (!m_listParents)
         m_listParents = &shaders.program({ "list parent cells", { "mipmap/ListParents.comp" }, {} });
     const int size = std::max(1, resolution / 2);
-    if (!m_listed || m_listed.width() != size)
-        m_listed = gl::Texture::create3D(GL_R32UI, size);
+    if (m_listed.desc() != marksDesc(resolution))
+        throw std::logic_error("the cell marks are not made for this grid");
     const GLuint none = 0;
     glClearTexImage(m_listed.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     m_levelCells.resize(std::size_t(std::max(levels - 1, 0)));
@@ -68,9 +82,8 @@ void VoxelMipBuilder::buildDirectional(
     const int levels = int(m_levelCells.size());
     if (levels < 1)
         return;
-    const int size = std::max(1, resolution / 2);
-    if (!directional || directional.width() != size || directional.levels() != levels)
-        directional = gl::Texture::create3DStack(GL_RGBA16F, size, kDirectionalTiles, levels);
+    if (directional.desc() != directionalDesc(resolution, levels + 1))
+        throw std::logic_error("the directional chains are not made for this grid");
     for (int level = 0; level < levels; ++level) {
         // The gaps between tiles are cleared too, as they must read empty.
         glClearTexImage(directional.id(), level, GL_RGBA, GL_FLOAT, nullptr);

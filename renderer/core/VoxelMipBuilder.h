@@ -31,11 +31,20 @@ public:
     void buildBox(const ShaderLibrary& shaders, gl::Texture& volume);
     /**
      * Six chains (+x, -x, +y, -y, +z, -z; texture level k = grid level k + 1) composited front to back from
-     * level 0 of @p source into the tiles of @p directional (a gl::Texture::create3DStack, (re)allocated as
-     * needed).
+     * level 0 of @p source into the tiles of @p directional, made as directionalDesc() says.
      */
     void buildDirectional(
         const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
+    /**
+     * The six directional chains of a grid of @p resolution with @p levelCount levels: one stack of tiles
+     * from grid level 1 (texture level k = grid level k + 1); empty for a grid of one level.
+     */
+    static gl::TextureDesc directionalDesc(int resolution, int levelCount);
+    /** The scratch texture listCells() marks listed cells in, for a grid of @p resolution. */
+    static gl::TextureDesc marksDesc(int resolution);
+    /** Where the marks live: its owner's textures() lists it, so the pipeline makes it as marksDesc() says.
+     */
+    gl::Texture& marks() { return m_listed; }
 
 private:
     const gl::Program* m_boxProgram = nullptr;

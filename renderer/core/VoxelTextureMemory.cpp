@@ -1,6 +1,6 @@
 #include "core/VoxelTextureMemory.h"
 
-#include "core/FrameResources.h"
+#include "core/ResourceTable.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -81,12 +81,12 @@ std::size_t VoxelTextureMemory::totalBytes() const
     return std::accumulate(levelBytes.begin(), levelBytes.end(), std::size_t(0));
 }
 
-std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& v)
+std::vector<VoxelTextureMemory> describeVoxelMemory(const ResourceTable& resources)
 {
     std::vector<VoxelTextureMemory> list;
-    for (const VoxelVolume::NamedTexture& named : v.textures())
-        if (*named.texture)
-            list.push_back(describe(named.name, *named.texture));
+    for (const ResourceTable::Entry& entry : resources.entries())
+        if (entry.group == ResourceGroup::Voxels && *entry.texture)
+            list.push_back(describe(entry.name, *entry.texture));
     return list;
 }
 

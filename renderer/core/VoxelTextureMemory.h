@@ -6,7 +6,7 @@
 
 namespace vct::render {
 
-struct VoxelVolume;
+class ResourceTable;
 
 /** Storage of one 3D texture of the voxel grid, mip level by mip level (for benchmarks and the stats panel).
  */
@@ -22,8 +22,8 @@ struct VoxelTextureMemory {
     std::size_t totalBytes() const;
 };
 
-/** Every allocated 3D texture of the volume, in a fixed order; their totals add up to
- * VoxelVolume::byteSize(). */
-std::vector<VoxelTextureMemory> describeVoxelMemory(const VoxelVolume& volume);
+/** Every allocated voxel texture of the table, in its order; their totals add up to
+ * ResourceTable::byteSize(ResourceGroup::Voxels). */
+std::vector<VoxelTextureMemory> describeVoxelMemory(const ResourceTable& resources);
 
 } // namespace vct::render

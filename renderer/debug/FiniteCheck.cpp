@@ -34,8 +34,7 @@ std::uint64_t FiniteCheck::count(const gl::Texture& texture, int level)
     return result;
 }
 
-std::vector<NonFiniteCount> FiniteCheck::run(
-    const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels)
+std::vector<NonFiniteCount> FiniteCheck::run(const ShaderLibrary& shaders, const ResourceTable& resources)
 {
     if (!m_flat) {
         m_flat = &shaders.program({ "count non-finite (2D)", { "check/CountNonFinite.comp" }, {} });
@@ -44,28 +43,26 @@ std::vector<NonFiniteCount> FiniteCheck::run(
         m_counter = gl::Buffer(sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     std::vector<NonFiniteCount> counts;
-    // 8-bit and integer targets cannot hold NaN or Inf, so only float ones are checked (the g-buffer's packed
-    // normal is made finite before it is packed).
-    const std::pair<const char*, const gl::Texture*> targets[] = { { "final", &screen.final },
-        { "indirect diffuse", &screen.indirectDiffuse },
-        { "indirect upsampling guide", &screen.indirectGuide }, { "specular", &screen.specular },
-        { "area-light shadows", &screen.areaShadow }, { "area-light shadow guide", &screen.areaShadowGuide },
-        { "specular upsampling guide", &screen.specularGuide } };
-    for (const auto& [name, texture] : targets)
-        if (*texture)
-            counts.push_back({ name, count(*texture, 0) });
-    // Every level of every float voxel texture (the directional stacks' level k is grid level k + 1).
-    for (const VoxelVolume::NamedTexture& named : voxels.textures()) {
-        const gl::Texture& texture = *named.texture;
-        if (!texture || !holdsFloats(texture.format()))
-            continue;
-        for (int level = 0; level < texture.levels(); ++level) {
-            // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
-            std::string name("voxel ");
-            name.append(named.name).append(", level ").append(std::to_string(level));
-            counts.push_back({ name, count(texture, level) });
+    // 8-bit, depth and integer textures cannot hold NaN or Inf, so only float ones are checked (the
+    // g-buffer's packed normal is made finite before it is packed): per-pixel targets, then every level of
+    // every voxel texture (the directional stacks' level k is grid level k + 1), then the passes' own data.
+    for (const ResourceGroup group :
+        { ResourceGroup::Screen, ResourceGroup::Voxels, ResourceGroup::PassState })
+        for (const ResourceTable::Entry& entry : resources.entries()) {
+            const gl::Texture& texture = *entry.texture;
+            if (entry.group != group || !texture || !holdsFloats(texture.format()))
+                continue;
+            if (group == ResourceGroup::Screen) {
+                counts.push_back({ entry.name, count(texture, 0) });
+                continue;
+            }
+            for (int level = 0; level < texture.levels(); ++level) {
+                // Appended piecewise: gcc 12 warns falsely (-Wrestrict) on literal + std::string chains.
+                std::string name(group == ResourceGroup::Voxels ? "voxel " : "");
+                name.append(entry.name).append(", level ").append(std::to_string(level));
+                counts.push_back({ name, count(texture, level) });
+            }
         }
-    }
     return counts;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/FrameResources.h"
 #include "core/NonFiniteCount.h"
+#include "core/ResourceTable.h"
 #include "core/ShaderLibrary.h"
 #include "gl/Buffer.h"
 
@@ -18,8 +18,8 @@ namespace vct::render {
  */
 class FiniteCheck {
 public:
-    std::vector<NonFiniteCount> run(
-        const ShaderLibrary& shaders, const ScreenTargets& screen, const VoxelVolume& voxels);
+    /** Counts in every float texture of @p resources: per-pixel targets, voxel textures, passes' own data. */
+    std::vector<NonFiniteCount> run(const ShaderLibrary& shaders, const ResourceTable& resources);
 
 private:
     std::uint64_t count(const gl::Texture& texture, int level);

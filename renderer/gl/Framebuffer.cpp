@@ -81,4 +81,22 @@ void Framebuffer::bind() const
     glBindFramebuffer(GL_FRAMEBUFFER, id());
 }
 
+void Framebuffer::follow(std::initializer_list<const Texture*> colors, const Texture* depth)
+{
+    std::vector<std::uint64_t> serials;
+    for (const Texture* color : colors)
+        serials.push_back(color->serial());
+    serials.push_back(depth ? depth->serial() : 0);
+    if (m_handle && serials == m_followed)
+        return;
+    *this = create();
+    int index = 0;
+    for (const Texture* color : colors)
+        attachColor(index++, *color);
+    if (depth)
+        attachDepth(*depth);
+    finish(index);
+    m_followed = std::move(serials);
+}
+
 } // namespace vct::gl

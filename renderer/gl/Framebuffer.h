@@ -3,6 +3,7 @@
 #include "gl/Handle.h"
 #include "gl/Texture.h"
 
+#include <cstdint>
 #include <initializer_list>
 #include <vector>
 
@@ -29,9 +30,16 @@ public:
     /** Draws only into the listed color attachments (by index), the others set to GL_NONE. */
     void drawTo(std::initializer_list<int> colors);
     void bind() const;
+    /**
+     * Makes this the framebuffer of @p colors (attachments 0, 1, ...) and @p depth (may be null), all drawn
+     * to; made anew only when they are not the textures attached last, so a pass can call it every frame and
+     * follow what the pipeline reallocated (Texture::serial).
+     */
+    void follow(std::initializer_list<const Texture*> colors, const Texture* depth);
 
 private:
     Handle<deleteFramebuffer> m_handle;
+    std::vector<std::uint64_t> m_followed; ///< serials of the textures follow() attached, depth last
 };
 
 } // namespace vct::gl

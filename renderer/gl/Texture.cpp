@@ -1,6 +1,7 @@
 #include "gl/Texture.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace vct::gl {
@@ -50,6 +51,54 @@ Texture::Texture(GLenum target, GLenum format, int w, int h, int d, int levels)
     GLuint id = 0;
     glCreateTextures(target, 1, &id);
     m_handle = Handle<deleteTexture>(id);
+    static std::atomic<std::uint64_t> made { 0 };
+    m_serial = ++made;
+}
+
+Texture Texture::create(const TextureDesc& desc)
+{
+    using Kind = TextureDesc::Kind;
+    Texture t;
+    switch (desc.kind) {
+    case Kind::None:
+        return t;
+    case Kind::Plane:
+        t = create2D(desc.format, desc.width, desc.height, desc.levels);
+        break;
+    case Kind::PlaneArray:
+        t = create2DArray(desc.format, desc.width, desc.height, desc.depth);
+        break;
+    case Kind::Volume:
+        t = create3D(desc.format, desc.width, desc.levels);
+        break;
+    case Kind::VolumeStack:
+        t = create3DStack(desc.format, desc.width, desc.depth, desc.levels);
+        break;
+    case Kind::CubeArray:
+        t = createCubeArray(desc.format, desc.width, desc.depth);
+        break;
+    }
+    switch (desc.sampling) {
+    case TextureDesc::Sampling::Filtered:
+        t.setFilter(desc.levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+        break;
+    case TextureDesc::Sampling::Nearest:
+        t.setFilter(GL_NEAREST, GL_NEAREST);
+        break;
+    case TextureDesc::Sampling::DepthComparison:
+        t.setDepthComparison();
+        break;
+    }
+    if (desc.zeroed) {
+        const bool integer
+            = desc.format == GL_R32UI || desc.format == GL_RG32UI || desc.format == GL_RGBA32UI;
+        const bool depth = desc.format == GL_DEPTH_COMPONENT32F || desc.format == GL_DEPTH_COMPONENT24;
+        const GLenum format = integer ? GL_RED_INTEGER : depth ? GL_DEPTH_COMPONENT : GL_RGBA;
+        for (int level = 0; level < desc.levels; ++level)
+            glClearTexImage(t.id(), level, format, integer ? GL_UNSIGNED_INT : GL_FLOAT, nullptr);
+    }
+    t.m_desc = desc;
+    return t;
 }
 
 Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels)

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "gl/Handle.h"
+#include "gl/TextureDesc.h"
 
 #include <cstddef>
+#include <cstdint>
 
 namespace vct::gl {
 
@@ -12,6 +14,8 @@ void deleteTexture(GLuint id);
 class Texture {
 public:
     Texture() = default;
+    /** What @p desc describes, sampled and (when it says so) cleared as it says; desc() returns it. */
+    static Texture create(const TextureDesc& desc);
     static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
     static Texture create2DArray(GLenum internalFormat, int width, int height, int layers);
     static Texture create3D(GLenum internalFormat, int size, int levels = 1);
@@ -38,6 +42,13 @@ public:
     int depth() const { return m_depth; }
     int levels() const { return m_levels; }
     explicit operator bool() const { return bool(m_handle); }
+    /** What create() was asked for; an empty description for textures made by the other functions. */
+    const TextureDesc& desc() const { return m_desc; }
+    /**
+     * Unique to this texture among all made in the process, unlike id(), which GL may give again after a
+     * deletion: what tells a framebuffer or a pass that a texture was made anew.
+     */
+    std::uint64_t serial() const { return m_serial; }
 
     void setFilter(GLenum minFilter, GLenum magFilter);
     void setWrap(GLenum wrap);
@@ -60,6 +71,8 @@ private:
     GLenum m_target = 0;
     GLenum m_format = 0;
     int m_width = 0, m_height = 0, m_depth = 0, m_levels = 0;
+    TextureDesc m_desc;
+    std::uint64_t m_serial = 0;
 };
 
 /** Bytes per texel of the internal formats we use. */

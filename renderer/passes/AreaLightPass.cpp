@@ -3,10 +3,25 @@
 #include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
+#include "core/ResourceNames.h"
 
 #include <string>
 
 namespace vct::render {
+
+using namespace resource;
+
+PassDeclaration AreaLightPass::declare() const
+{
+    return { { kSurface, kOpacity }, { kAreaShadow, kAreaShadowGuide, kAreaShadowStencil } };
+}
+
+std::vector<TextureSlot> AreaLightPass::textures(const FrameContext& frame)
+{
+    ScreenTargets& s = frame.screen;
+    return s.tracedGrid({ kAreaShadow, kAreaShadowGuide, kAreaShadowStencil }, s.areaShadow,
+        s.areaShadowGuide, s.areaShadowStencil, s.areaDivisor, frame.shape.areaLights > 0);
+}
 
 PassDecision AreaLightPass::plan(const FrameContext& frame) const
 {
@@ -27,6 +42,7 @@ void AreaLightPass::execute(FrameContext& frame)
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;
+    s.areaShadowTarget.follow({ &s.areaShadow, &s.areaShadowGuide }, &s.areaShadowStencil);
     s.areaShadowTarget.bind();
     glViewport(0, 0, s.areaShadow.width(), s.areaShadow.height());
     glDisable(GL_DEPTH_TEST);

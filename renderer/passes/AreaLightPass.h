@@ -17,10 +17,8 @@ namespace vct::render {
 class AreaLightPass final : public RenderPass {
 public:
     const char* name() const override { return "area-light shadows"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::GBuffer, Resource::VoxelMaterials }, { Resource::IndirectLight } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { }

@@ -4,11 +4,28 @@
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/PixelClass.h"
+#include "core/ResourceNames.h"
 
 #include <algorithm>
 #include <set>
 
 namespace vct::render {
+
+using namespace resource;
+
+PassDeclaration CompositePass::declare() const
+{
+    return { { kSurface, kDepth, kIndirectDiffuse, kIndirectGuide, kSpecular, kSpecularGuide, kAreaShadow,
+                 kAreaShadowGuide, kPointShadows, kDirectionalShadows },
+        { kFinal } };
+}
+
+std::vector<TextureSlot> CompositePass::textures(const FrameContext& frame)
+{
+    ScreenTargets& s = frame.screen;
+    return { { kFinal, ResourceGroup::Screen, &s.final,
+        gl::TextureDesc::plane(GL_RGBA32F, s.width, s.height) } };
+}
 
 std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame, std::uint32_t pixelClass)
 {
@@ -55,6 +72,8 @@ void CompositePass::execute(FrameContext& frame)
     s.specularGuide.bindUnit(10);
     s.areaShadow.bindUnit(2);
     s.areaShadowGuide.bindUnit(4);
+    // The g-buffer's depth and stencil come along, read only: its pixel classes pick each variant's pixels.
+    s.finalTarget.follow({ &s.final }, &s.depth);
     s.finalTarget.bind();
     glViewport(0, 0, s.width, s.height);
     const float sky[4] = { 0.0f, 0.0f, 0.0f, 1.0f };

@@ -19,11 +19,8 @@ namespace vct::render {
 class CompositePass final : public RenderPass {
 public:
     const char* name() const override { return "composite"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::GBuffer, Resource::IndirectLight, Resource::ShadowMaps },
-            { Resource::FinalImage } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext&) const override
     {
         return { PassDecision::Action::Run, "per-frame" };

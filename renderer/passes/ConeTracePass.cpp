@@ -4,6 +4,7 @@
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/PixelClass.h"
+#include "core/ResourceNames.h"
 #include "debug/ConeSampleCounter.h"
 #include "passes/VoxelIrradiancePass.h"
 
@@ -14,6 +15,28 @@
 #include <cmath>
 
 namespace vct::render {
+
+using namespace resource;
+
+PassDeclaration ConeTracePass::declare() const
+{
+    return { { kSurface, kRadiance, kRadianceDirectional, kBounced, kBouncedDirectional, kIrradiance,
+                 kIrradianceBack, kIrradianceNormals },
+        { kIndirectDiffuse, kIndirectGuide, kIndirectStencil, kSpecular, kSpecularGuide, kSpecularStencil } };
+}
+
+std::vector<TextureSlot> ConeTracePass::textures(const FrameContext& frame)
+{
+    ScreenTargets& s = frame.screen;
+    // The diffuse grid carries the composite's upsampling guide whenever the pass runs.
+    const bool runs = frame.shape.diffuseCones || frame.shape.specularCones;
+    std::vector<TextureSlot> slots = s.tracedGrid({ kIndirectDiffuse, kIndirectGuide, kIndirectStencil },
+        s.indirectDiffuse, s.indirectGuide, s.indirectStencil, s.indirectDivisor, runs);
+    for (TextureSlot& slot : s.tracedGrid({ kSpecular, kSpecularGuide, kSpecularStencil }, s.specular,
+             s.specularGuide, s.specularStencil, s.specularDivisor, frame.shape.specularCones))
+        slots.push_back(slot);
+    return slots;
+}
 
 PassDecision ConeTracePass::plan(const FrameContext& frame) const
 {
@@ -116,6 +139,7 @@ void ConeTracePass::execute(FrameContext& frame)
     }
     classify.set("uGridOrigin", v.frame.origin);
     classify.set("uDiffuseEnabled", diffuse ? 1 : 0);
+    s.indirectTarget.follow({ &s.indirectDiffuse, &s.indirectGuide }, &s.indirectStencil);
     s.indirectTarget.bind();
     glViewport(0, 0, s.indirectDiffuse.width(), s.indirectDiffuse.height());
     s.indirectTarget.drawTo({ 0, 1 });
@@ -137,6 +161,7 @@ void ConeTracePass::execute(FrameContext& frame)
                 { "common/FullScreen.vert", "cone/ClassifyPixels.frag" }, { "SPECULAR_GRID" } });
         const gl::Program& cone = variant(
             frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
+        s.specularTarget.follow({ &s.specular, &s.specularGuide }, &s.specularStencil);
         s.specularTarget.bind();
         glViewport(0, 0, s.specular.width(), s.specular.height());
         const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };

@@ -18,11 +18,8 @@ namespace vct::render {
 class ConeTracePass final : public RenderPass {
 public:
     const char* name() const override { return "cone trace"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::GBuffer, Resource::VoxelMips, Resource::VoxelIrradiance },
-            { Resource::IndirectLight } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { }

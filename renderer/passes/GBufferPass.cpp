@@ -1,12 +1,30 @@
 #include "passes/GBufferPass.h"
 
 #include "core/FrameContext.h"
+#include "core/ResourceNames.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
 namespace vct::render {
+
+using namespace resource;
+
+PassDeclaration GBufferPass::declare() const
+{
+    return { {}, { kSurface, kDepth } };
+}
+
+std::vector<TextureSlot> GBufferPass::textures(const FrameContext& frame)
+{
+    using gl::TextureDesc;
+    ScreenTargets& s = frame.screen;
+    return { { kSurface, ResourceGroup::Screen, &s.surface,
+                 TextureDesc::plane(GL_RGBA32UI, s.width, s.height).sampled(TextureDesc::Sampling::Nearest) },
+        { kDepth, ResourceGroup::Screen, &s.depth,
+            TextureDesc::plane(GL_DEPTH32F_STENCIL8, s.width, s.height) } };
+}
 
 void GBufferPass::execute(FrameContext& frame)
 {
@@ -16,6 +34,7 @@ void GBufferPass::execute(FrameContext& frame)
             { "g-buffer (textured)", { "gbuffer/GBuffer.vert", "gbuffer/GBuffer.frag" }, { "TEXTURED" } }),
     };
     ScreenTargets& s = frame.screen;
+    s.gbuffer.follow({ &s.surface }, &s.depth);
     s.gbuffer.bind();
     glViewport(0, 0, s.width, s.height);
     glEnable(GL_DEPTH_TEST);

@@ -9,7 +9,8 @@ namespace vct::render {
 class GBufferPass final : public RenderPass {
 public:
     const char* name() const override { return "g-buffer"; }
-    PassDeclaration declare() const override { return { {}, { Resource::GBuffer } }; }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext&) const override
     {
         return { PassDecision::Action::Run, "per-frame" };

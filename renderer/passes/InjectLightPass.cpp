@@ -2,6 +2,7 @@
 
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
+#include "core/ResourceNames.h"
 
 #include <algorithm>
 #include <string>
@@ -82,6 +83,26 @@ VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
         .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
 }
 
+PassDeclaration InjectLightPass::declare() const
+{
+    using namespace resource;
+    return { { kAlbedo, kNormal, kEmission, kPointShadows, kDirectionalShadows }, { kRadiance, kOpacity } };
+}
+
+std::vector<TextureSlot> InjectLightPass::textures(const FrameContext& frame)
+{
+    using gl::TextureDesc;
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass). Only the area
+    // lights' shadow cones read the opacity volume: scenes without them do not keep it.
+    return { { resource::kRadiance, ResourceGroup::Voxels, &v.radiance,
+                 TextureDesc::volume(GL_RGBA16F, res, frame.shape.radianceLevels) },
+        { resource::kOpacity, ResourceGroup::Voxels, &v.opacity,
+            frame.shape.areaLights > 0 ? TextureDesc::volume(GL_RGBA8, res, v.frame.levelCount())
+                                       : TextureDesc {} } };
+}
+
 PassDecision InjectLightPass::plan(const FrameContext& frame) const
 {
     if (keyOf(frame) == m_key)
@@ -113,12 +134,9 @@ void InjectLightPass::buildOpacity(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
     // Only the area lights' shadow cones read the volume: scenes without them do not keep it.
-    if (!v.opacity || v.opacity.width() != v.frame.resolution) {
-        v.opacity = gl::Texture::create3D(GL_RGBA8, v.frame.resolution, v.frame.levelCount());
-        v.opacityVersion = 0;
-    }
-    if (v.opacityVersion == v.materialsVersion)
+    if (v.opacityVersion == v.materialsVersion && v.opacity.serial() == m_opacitySerial)
         return;
+    m_opacitySerial = v.opacity.serial();
     if (!m_markOpacity) {
         m_markOpacity = &frame.shaders.program({ "mark opacity", { "inject/MarkOpacity.comp" }, {} });
         m_downsampleOpacity
@@ -157,8 +175,6 @@ void InjectLightPass::execute(FrameContext& frame)
             "AREA_LIGHT_COUNT " + std::to_string(areas) } });
     if (areas > 0)
         buildOpacity(frame);
-    else
-        frame.voxels.opacity = gl::Texture {};
     const VoxelRegion region = regionToInject(frame);
     m_key = keyOf(frame);
     VoxelVolume& v = frame.voxels;

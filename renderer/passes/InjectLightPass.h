@@ -21,10 +21,8 @@ namespace vct::render {
 class InjectLightPass final : public RenderPass {
 public:
     const char* name() const override { return "inject light"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::VoxelMaterials, Resource::ShadowMaps }, { Resource::VoxelRadiance } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_key = {}; }
@@ -51,6 +49,7 @@ private:
     const gl::Program* m_downsampleOpacity = nullptr;
     OccupiedCellList m_occupied;
     LightKey m_key;
+    std::uint64_t m_opacitySerial = 0; ///< the opacity texture last built (with VoxelVolume::opacityVersion)
 };
 
 } // namespace vct::render

@@ -1,25 +1,29 @@
 #include "passes/MipmapPass.h"
 
 #include "core/FrameContext.h"
+#include "core/ResourceNames.h"
 
 namespace vct::render {
 
-namespace {
-
-/** Gives @p texture @p levels mip levels, keeping level 0. */
-void setLevelCount(gl::Texture& texture, int levels)
+PassDeclaration MipmapPass::declare() const
 {
-    if (texture.levels() == levels)
-        return;
-    const int side = texture.width();
-    gl::Texture resized = gl::Texture::create3D(texture.format(), side, levels);
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glCopyImageSubData(
-        texture.id(), GL_TEXTURE_3D, 0, 0, 0, 0, resized.id(), GL_TEXTURE_3D, 0, 0, 0, 0, side, side, side);
-    texture = std::move(resized);
+    return { { resource::kRadiance },
+        { resource::kRadiance, resource::kRadianceDirectional, resource::kMipCellMarks } };
 }
 
-} // namespace
+std::vector<TextureSlot> MipmapPass::textures(const FrameContext& frame)
+{
+    // With bounces in the voxels cones trace the bounced volume, which filters its own levels; the
+    // first-bounce light is only its source, read at level 0, so its levels would be memory nobody reads.
+    VoxelVolume& v = frame.voxels;
+    const bool filters = !frame.shape.bounceVolume;
+    const bool chains = frame.settings.anisotropicMips && filters;
+    return { { resource::kRadianceDirectional, ResourceGroup::Voxels, &v.directional,
+                 chains ? VoxelMipBuilder::directionalDesc(v.frame.resolution, v.frame.levelCount())
+                        : gl::TextureDesc {} },
+        { resource::kMipCellMarks, ResourceGroup::Voxels, &m_builder.marks(),
+            filters ? VoxelMipBuilder::marksDesc(v.frame.resolution) : gl::TextureDesc {} } };
+}
 
 PassDecision MipmapPass::plan(const FrameContext& frame) const
 {
@@ -37,20 +41,14 @@ void MipmapPass::execute(FrameContext& frame)
     m_radianceVersion = v.radianceVersion;
     m_anisotropic = frame.settings.anisotropicMips;
     m_levelZeroOnly = frame.shape.bounceVolume;
-    // With bounces in the voxels cones trace the bounced volume, which filters its own levels; the
-    // first-bounce light is only its source, read at level 0, so its levels would be memory nobody reads.
-    setLevelCount(v.radiance, frame.shape.radianceLevels);
-    if (m_levelZeroOnly) {
-        v.directional = gl::Texture();
+    if (m_levelZeroOnly)
         return;
-    }
     m_builder.listCells(frame.shaders, v.frame.resolution, v.frame.levelCount(),
         v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
     } else {
         m_builder.buildBox(frame.shaders, v.radiance);
-        v.directional = gl::Texture();
     }
 }
 

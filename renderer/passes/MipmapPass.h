@@ -16,10 +16,8 @@ namespace vct::render {
 class MipmapPass final : public RenderPass {
 public:
     const char* name() const override { return "mipmaps"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::VoxelRadiance }, { Resource::VoxelMips } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }

@@ -2,6 +2,7 @@
 
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
+#include "core/ResourceNames.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -9,6 +10,8 @@
 #include <cmath>
 
 namespace vct::render {
+
+using namespace resource;
 
 namespace {
 
@@ -25,6 +28,35 @@ bool anyShadowCaster(const Scene& scene)
 
 } // namespace
 
+PassDeclaration ShadowMapPass::declare() const
+{
+    return { {}, { kPointShadows, kDirectionalShadows, kStaticPointShadows, kStaticDirectionalShadows } };
+}
+
+std::vector<TextureSlot> ShadowMapPass::textures(const FrameContext& frame)
+{
+    using gl::TextureDesc;
+    // Without a shadow caster the maps shrink to one texel: samplers of every type still need a texture.
+    const Scene& scene = frame.scene.scene();
+    const bool casting = anyShadowCaster(scene);
+    const int size = casting ? frame.settings.shadowMapSize : 1;
+    const int points = casting ? std::clamp<int>(int(scene.pointLights.size()), 1, kMaxPointLights) : 1;
+    const int directionals
+        = casting ? std::clamp<int>(int(scene.directionalLights.size()), 1, kMaxDirectionalLights) : 1;
+    const TextureDesc point = TextureDesc::cubeArray(GL_DEPTH_COMPONENT32F, size, points);
+    const TextureDesc directional = TextureDesc::planeArray(GL_DEPTH_COMPONENT32F, size, size, directionals);
+    // Static casters get maps of their own when something moves: a move then costs a copy and its own draw.
+    const bool staticLayer = casting && frame.scene.hasDynamicMeshes();
+    ShadowMaps& shadows = frame.shadows;
+    return { { kPointShadows, ResourceGroup::Shadows, &shadows.pointDepth,
+                 point.sampled(TextureDesc::Sampling::DepthComparison) },
+        { kDirectionalShadows, ResourceGroup::Shadows, &shadows.directionalDepth,
+            directional.sampled(TextureDesc::Sampling::DepthComparison) },
+        { kStaticPointShadows, ResourceGroup::Shadows, &m_staticPoint, staticLayer ? point : TextureDesc {} },
+        { kStaticDirectionalShadows, ResourceGroup::Shadows, &m_staticDirectional,
+            staticLayer ? directional : TextureDesc {} } };
+}
+
 ShadowMapPass::MapsKey ShadowMapPass::keyOf(const FrameContext& frame)
 {
     return { frame.versions.staticGeometry, frame.versions.dynamicGeometry, frame.versions.lightPlacement,
@@ -39,33 +71,6 @@ PassDecision ShadowMapPass::plan(const FrameContext& frame) const
         return { PassDecision::Action::Reuse, "lights and geometry unchanged" };
     return { PassDecision::Action::Run,
         m_key == MapsKey {} ? "no valid output yet" : "lights or geometry changed" };
-}
-
-void ShadowMapPass::ensureTextures(
-    ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer)
-{
-    if (shadows.size != size || shadows.pointDepth.depth() != 6 * std::max(points, 1)
-        || shadows.directionalDepth.depth() != std::max(directionals, 1)) {
-        shadows.pointDepth = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
-        shadows.directionalDepth
-            = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
-        shadows.pointDepth.setDepthComparison();
-        shadows.directionalDepth.setDepthComparison();
-        if (!shadows.rawDepth)
-            shadows.rawDepth = gl::Sampler::createRawDepth();
-        shadows.size = size;
-        m_staticPoint = gl::Texture();
-        m_staticDirectional = gl::Texture();
-        m_staticKey = {};
-    }
-    if (staticLayer && !m_staticPoint) {
-        m_staticPoint = gl::Texture::createCubeArray(GL_DEPTH_COMPONENT32F, size, std::max(points, 1));
-        m_staticDirectional
-            = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, size, size, std::max(directionals, 1));
-        m_staticKey = {};
-    }
-    if (!shadows.framebuffer)
-        shadows.framebuffer = gl::Framebuffer::create();
 }
 
 void ShadowMapPass::drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
@@ -144,7 +149,11 @@ void ShadowMapPass::execute(FrameContext& frame)
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     const bool dynamicLayer = frame.scene.hasDynamicMeshes();
-    ensureTextures(shadows, size, points, directionals, dynamicLayer);
+    shadows.size = size;
+    if (!shadows.rawDepth)
+        shadows.rawDepth = gl::Sampler::createRawDepth();
+    if (!shadows.framebuffer)
+        shadows.framebuffer = gl::Framebuffer::create();
 
     // Depth ranges come from the voxel grid, which only changes with a static rebuild: the static layer's
     // distances stay valid while a dynamic object moves.

@@ -16,7 +16,8 @@ namespace vct::render {
 class ShadowMapPass final : public RenderPass {
 public:
     const char* name() const override { return "shadow maps"; }
-    PassDeclaration declare() const override { return { {}, { Resource::ShadowMaps } }; }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override
@@ -36,7 +37,6 @@ private:
         bool operator==(const MapsKey& other) const = default;
     };
     static MapsKey keyOf(const FrameContext& frame);
-    void ensureTextures(ShadowMaps& shadows, int size, int points, int directionals, bool staticLayer);
     void drawMaps(FrameContext& frame, const gl::Texture& point, const gl::Texture& directional,
         MeshFilter filter, bool clear);
 

@@ -3,6 +3,7 @@
 #include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
+#include "core/ResourceNames.h"
 
 #include "bounce/BounceSums.glsl"
 
@@ -48,30 +49,47 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame) const
         v.bounced ? "first-bounce radiance or a bounce setting changed" : "no valid output yet" };
 }
 
-void VoxelBouncePass::release(FrameContext& frame)
+PassDeclaration VoxelBouncePass::declare() const
 {
-    // Cones must go back to the first-bounce volume; the memory is not needed either.
-    VoxelVolume& v = frame.voxels;
-    for (gl::Texture* t : { &v.bounced, &v.bouncedDirectional, &v.bounceIrradiance, &v.bounceIrradianceBack,
-             &v.bounceCellNormal })
-        *t = gl::Texture();
-    v.bounceProgress = {};
-    m_radianceVersion = 0;
+    using namespace resource;
+    return { { kAlbedo, kNormal, kEmission, kRadiance },
+        { kBounced, kBouncedDirectional, kBounceCells, kBounceCellsBack, kBounceCellNormals, kBounceCellMarks,
+            kBounceSums } };
 }
 
-void VoxelBouncePass::allocate(VoxelVolume& v, int cells, int levels)
+std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
 {
+    using gl::TextureDesc;
+    using namespace resource;
+    VoxelVolume& v = frame.voxels;
+    // Only while the voxels carry bounces: otherwise cones go back to the first-bounce volume.
+    const bool used = frame.shape.bounceVolume;
     const int res = v.frame.resolution;
-    if (!v.bounced || v.bounced.width() != res || v.bounced.levels() != levels)
-        v.bounced = gl::Texture::create3D(GL_RGBA16F, res, levels);
-    if (!v.bounceIrradiance || v.bounceIrradiance.width() != cells)
-        for (gl::Texture* t : { &v.bounceIrradiance, &v.bounceIrradianceBack, &v.bounceCellNormal }) {
-            // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
-            *t = gl::Texture::create3D(t == &v.bounceCellNormal ? GL_RGBA8_SNORM : GL_RGBA16F, cells);
-            t->setFilter(GL_NEAREST, GL_NEAREST);
-        }
-    if (!m_sums)
-        m_sums = gl::Texture::create2D(GL_R32F, BOUNCE_SUMS_PER_ITERATION * BOUNCE_SUMS_ITERATIONS, 1);
+    const int cells = res / std::min(frame.settings.bounceCellSize, res);
+    const auto ifUsed = [used](const TextureDesc& desc) { return used ? desc : TextureDesc {}; };
+    // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
+    const TextureDesc cell = TextureDesc::volume(GL_RGBA16F, cells).sampled(TextureDesc::Sampling::Nearest);
+    const TextureDesc cellNormal
+        = TextureDesc::volume(GL_RGBA8_SNORM, cells).sampled(TextureDesc::Sampling::Nearest);
+    return { { kBounced, ResourceGroup::Voxels, &v.bounced,
+                 ifUsed(TextureDesc::volume(GL_RGBA16F, res, frame.shape.coneVolumeLevels)) },
+        { kBouncedDirectional, ResourceGroup::Voxels, &v.bouncedDirectional,
+            frame.settings.anisotropicMips
+                ? ifUsed(VoxelMipBuilder::directionalDesc(res, v.frame.levelCount()))
+                : TextureDesc {} },
+        { kBounceCells, ResourceGroup::Voxels, &v.bounceIrradiance, ifUsed(cell) },
+        { kBounceCellsBack, ResourceGroup::Voxels, &v.bounceIrradianceBack, ifUsed(cell) },
+        { kBounceCellNormals, ResourceGroup::Voxels, &v.bounceCellNormal, ifUsed(cellNormal) },
+        { kBounceCellMarks, ResourceGroup::Voxels, &m_builder.marks(),
+            ifUsed(VoxelMipBuilder::marksDesc(res)) },
+        { kBounceSums, ResourceGroup::PassState, &m_sums,
+            ifUsed(TextureDesc::plane(GL_R32F, BOUNCE_SUMS_PER_ITERATION * BOUNCE_SUMS_ITERATIONS, 1)) } };
+}
+
+void VoxelBouncePass::release(FrameContext& frame)
+{
+    frame.voxels.bounceProgress = {};
+    m_radianceVersion = 0;
 }
 
 void VoxelBouncePass::buildMips(FrameContext& frame)
@@ -233,12 +251,12 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
-    const int levels = frame.shape.coneVolumeLevels;
-    const bool voxelsChanged = !v.bounced || v.materialsVersion != m_listedMaterials
-        || v.bounced.width() != res || v.bounced.levels() != levels || !v.bounceIrradiance
-        || v.bounceIrradiance.width() != cells;
-    allocate(v, cells, levels);
+    // New textures (the pipeline makes them as textures() says) need their cells found again.
+    const bool voxelsChanged = v.materialsVersion != m_listedMaterials
+        || v.bounced.serial() != m_bouncedSerial || v.bounceIrradiance.serial() != m_cellsSerial;
     if (voxelsChanged) {
+        m_bouncedSerial = v.bounced.serial();
+        m_cellsSerial = v.bounceIrradiance.serial();
         m_cells.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize);
         m_builder.listCells(
             frame.shaders, res, v.frame.levelCount(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
@@ -287,10 +305,6 @@ void VoxelBouncePass::execute(FrameContext& frame)
         }
         m_done = m_done || m_iterations >= limit;
     }
-    // With anisotropic mips cones read level 0 and the directional chains only; the inspector filters box
-    // levels of its own (VoxelVolume::inspectionMips).
-    if (!frame.settings.anisotropicMips)
-        v.bouncedDirectional = gl::Texture();
     v.bounceProgress = { m_iterations, m_residual, m_done, m_extrapolated };
     m_radianceVersion = v.radianceVersion;
     m_key = keyOf(frame);

@@ -32,10 +32,8 @@ struct VoxelVolume;
 class VoxelBouncePass final : public RenderPass {
 public:
     const char* name() const override { return "bounces"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::VoxelMaterials, Resource::VoxelMips }, { Resource::VoxelMips } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void release(FrameContext& frame) override;
@@ -53,7 +51,6 @@ private:
     static SolveKey keyOf(const FrameContext& frame);
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
-    void allocate(VoxelVolume& v, int cells, int levels);
     /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */
     void startFromFirstBounce(FrameContext& frame);
     void buildMips(FrameContext& frame);
@@ -82,6 +79,8 @@ private:
     OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
+    std::uint64_t m_bouncedSerial = 0; ///< the textures m_cells and the builder's lists were found for
+    std::uint64_t m_cellsSerial = 0;
     std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for
     std::uint64_t m_listedMaterials = 0; ///< the voxels m_cells and the mip lists were made for
     SolveKey m_key;

@@ -2,6 +2,7 @@
 
 #include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
+#include "core/ResourceNames.h"
 
 #include <algorithm>
 
@@ -37,25 +38,41 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame) const
     return { PassDecision::Action::Run, "view changed: gathering only the cells that came into view" };
 }
 
+PassDeclaration VoxelIrradiancePass::declare() const
+{
+    using namespace resource;
+    return { { kSurface, kRadiance, kRadianceDirectional, kBounced, kBouncedDirectional },
+        { kIrradiance, kIrradianceBack, kIrradianceNormals, kIrradianceRequested } };
+}
+
+std::vector<TextureSlot> VoxelIrradiancePass::textures(const FrameContext& frame)
+{
+    using gl::TextureDesc;
+    using namespace resource;
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    const int cells = res / std::min(frame.settings.irradianceCellSize, res);
+    // Without the cache the cone pass traces per pixel: the memory is not needed.
+    const bool used = frame.shape.irradianceCache;
+    const auto ifUsed = [used](const TextureDesc& desc) { return used ? desc : TextureDesc {}; };
+    // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
+    const TextureDesc cell = TextureDesc::volume(GL_RGBA16F, cells).sampled(TextureDesc::Sampling::Nearest);
+    return { { kIrradiance, ResourceGroup::Voxels, &v.irradiance, ifUsed(cell) },
+        { kIrradianceBack, ResourceGroup::Voxels, &v.irradianceBack, ifUsed(cell) },
+        { kIrradianceNormals, ResourceGroup::Voxels, &v.irradianceNormal,
+            ifUsed(TextureDesc::volume(GL_RGBA8_SNORM, cells).sampled(TextureDesc::Sampling::Nearest)) },
+        { kIrradianceRequested, ResourceGroup::Voxels, &v.irradianceRequested,
+            ifUsed(TextureDesc::volume(GL_R32UI, cells)) } };
+}
+
 void VoxelIrradiancePass::release(FrameContext& frame)
 {
-    // The cone pass traces per pixel; the memory is not needed either.
-    VoxelVolume& v = frame.voxels;
-    for (gl::Texture* t : { &v.irradiance, &v.irradianceBack, &v.irradianceNormal, &v.irradianceRequested })
-        *t = gl::Texture();
+    (void)frame;
     m_radianceVersion = 0;
 }
 
-void VoxelIrradiancePass::forgetCells(VoxelVolume& v, int cells)
+void VoxelIrradiancePass::forgetCells(VoxelVolume& v)
 {
-    if (!v.irradiance || v.irradiance.width() != cells) {
-        for (gl::Texture* t : { &v.irradiance, &v.irradianceBack, &v.irradianceNormal }) {
-            // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
-            *t = gl::Texture::create3D(t == &v.irradianceNormal ? GL_RGBA8_SNORM : GL_RGBA16F, cells);
-            t->setFilter(GL_NEAREST, GL_NEAREST);
-        }
-        v.irradianceRequested = gl::Texture::create3D(GL_R32UI, cells);
-    }
     // Every texel must be finite for the NaN/Inf check; lookups never read a cell that was not requested.
     const float none[4] = { 0.0f, 0.0f, 0.0f, -1.0f };
     const float noSurface[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
@@ -83,7 +100,9 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
     const std::size_t capacity = std::size_t(cells) * std::size_t(cells) * std::size_t(cells);
     VoxelVolume& v = frame.voxels;
     const ScreenTargets& s = frame.screen;
-    const int width = s.indirectDiffuse.width(), height = s.indirectDiffuse.height();
+    // The traced pixels' grid: the cone pass, which runs after this one, makes its targets at this size.
+    const int width = ScreenTargets::tracedSize(s.width, s.indirectDivisor);
+    const int height = ScreenTargets::tracedSize(s.height, s.indirectDivisor);
     if (!m_requestTarget || m_requestWidth != width || m_requestHeight != height) {
         m_requestTarget = gl::Framebuffer::createEmpty(width, height);
         m_requestWidth = width;
@@ -137,11 +156,11 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
-    const bool fresh = !(v.irradiance && v.radianceVersion == m_radianceVersion
-                           && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key)
-        || v.irradiance.width() != cells;
+    const bool fresh = !(v.radianceVersion == m_radianceVersion && v.bouncedVersion == m_bouncedVersion
+        && keyOf(frame) == m_key && v.irradiance.serial() == m_cellsSerial);
     if (fresh)
-        forgetCells(v, cells);
+        forgetCells(v);
+    m_cellsSerial = v.irradiance.serial();
     requestCells(frame, cells, cellSize, !fresh);
 
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.

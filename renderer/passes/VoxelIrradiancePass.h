@@ -31,11 +31,8 @@ struct VoxelVolume;
 class VoxelIrradiancePass final : public RenderPass {
 public:
     const char* name() const override { return "irradiance cache"; }
-    PassDeclaration declare() const override
-    {
-        return { { Resource::VoxelMaterials, Resource::VoxelMips, Resource::GBuffer },
-            { Resource::VoxelIrradiance } };
-    }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void release(FrameContext& frame) override;
@@ -60,7 +57,7 @@ private:
     };
     static ViewKey viewOf(const FrameContext& frame);
     /** Fresh textures, nothing gathered: after the voxel light or a gather setting changed. */
-    void forgetCells(VoxelVolume& voxels, int cells);
+    void forgetCells(VoxelVolume& voxels);
     /**
      * Lists the cells the traced pixels look up that hold voxels and were not gathered yet; @p fewNew after a
      * camera move (the pixels list the new cells themselves), otherwise in grid order over every cell.
@@ -73,6 +70,7 @@ private:
     OccupiedCellList m_newCells; ///< listed by the request pass after a camera move
     OccupiedCellList m_requested; ///< the cells to gather
     std::uint64_t m_radianceVersion = 0;
+    std::uint64_t m_cellsSerial = 0; ///< the cache texture last cleared (a new one must be cleared)
     std::uint64_t m_bouncedVersion = 0;
     GatherKey m_key {};
     ViewKey m_view;

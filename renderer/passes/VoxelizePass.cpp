@@ -2,6 +2,7 @@
 
 #include "core/FrameContext.h"
 #include "core/Frustum.h"
+#include "core/ResourceNames.h"
 
 namespace vct::render {
 
@@ -28,6 +29,30 @@ PassDecision VoxelizePass::plan(const FrameContext& frame) const
     return { PassDecision::Action::Reuse, "geometry unchanged" };
 }
 
+PassDeclaration VoxelizePass::declare() const
+{
+    return { {}, { resource::kAlbedo, resource::kNormal, resource::kEmission } };
+}
+
+std::vector<TextureSlot> VoxelizePass::textures(const FrameContext& frame)
+{
+    using gl::TextureDesc;
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
+    // Only scenes with emissive materials keep an emission volume. Made when a material starts to emit, it
+    // holds no light yet anywhere, which is right: nothing emitted before, and the voxels of the material's
+    // meshes are redone now.
+    const bool emission = frame.scene.scene().hasEmissiveMaterial();
+    return { { resource::kAlbedo, ResourceGroup::Voxels, &v.albedo, TextureDesc::volume(GL_RGBA8, res) },
+        { resource::kNormal, ResourceGroup::Voxels, &v.normal, TextureDesc::volume(GL_RGBA8_SNORM, res) },
+        { resource::kEmission, ResourceGroup::Voxels, &v.emission,
+            emission ? TextureDesc::volume(GL_R11F_G11F_B10F, res)
+                           .sampled(TextureDesc::Sampling::Nearest)
+                           .zeroedWhenMade()
+                     : TextureDesc {} } };
+}
+
 void VoxelizePass::ensureResources(FrameContext& frame)
 {
     if (!m_voxelize) {
@@ -38,39 +63,12 @@ void VoxelizePass::ensureResources(FrameContext& frame)
         m_resolve = &frame.shaders.program({ "voxel resolve", { "voxelize/Resolve.comp" }, {} });
     }
     VoxelVolume& v = frame.voxels;
-    const int res = v.frame.resolution;
-    if (v.albedo && v.albedo.width() == res) {
-        ensureEmission(frame);
+    if (v.albedo.serial() == m_albedoSerial)
         return;
-    }
-    m_staticGeometry = 0; // rebuilt whole in the new textures
+    // New textures (the pipeline invalidated the pass, so it rebuilds them whole): nothing moved in them yet.
     v.dynamicBounds = Aabb {};
-    // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
-    v.albedo = gl::Texture::create3D(GL_RGBA8, res);
-    v.normal = gl::Texture::create3D(GL_RGBA8_SNORM, res);
-    v.emission = gl::Texture {};
-    ensureEmission(frame);
-    // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass).
-    v.radiance = gl::Texture::create3D(GL_RGBA16F, res, frame.shape.radianceLevels);
-    v.opacity = gl::Texture {}; // rebuilt at the new size if area lights need it
-    m_framebuffer = gl::Framebuffer::createEmpty(res, res);
-}
-
-void VoxelizePass::ensureEmission(FrameContext& frame)
-{
-    // Only scenes with emissive materials keep an emission volume. Made when a material starts to emit, it
-    // holds no light yet anywhere, which is right: nothing emitted before, and the voxels of the material's
-    // meshes are redone now.
-    VoxelVolume& v = frame.voxels;
-    const bool needed = frame.scene.scene().hasEmissiveMaterial();
-    if (needed && !v.emission) {
-        v.emission = gl::Texture::create3D(GL_R11F_G11F_B10F, v.frame.resolution);
-        v.emission.setFilter(GL_NEAREST, GL_NEAREST);
-        const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-        glClearTexImage(v.emission.id(), 0, GL_RGB, GL_FLOAT, zero);
-    } else if (!needed && v.emission) {
-        v.emission = gl::Texture {};
-    }
+    m_framebuffer = gl::Framebuffer::createEmpty(v.frame.resolution, v.frame.resolution);
+    m_albedoSerial = v.albedo.serial();
 }
 
 void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)

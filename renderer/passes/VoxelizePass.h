@@ -19,15 +19,14 @@ namespace vct::render {
 class VoxelizePass final : public RenderPass {
 public:
     const char* name() const override { return "voxelize"; }
-    PassDeclaration declare() const override { return { {}, { Resource::VoxelMaterials } }; }
+    PassDeclaration declare() const override;
+    std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void invalidate() override { m_staticGeometry = m_staticMaterials = m_dynamicVersion = 0; }
 
 private:
     void ensureResources(FrameContext& frame);
-    /** An emission volume exactly when the scene has emissive materials. */
-    static void ensureEmission(FrameContext& frame);
     /** Empties the region's albedo, normal and emission, which the voxelizer then averages into. */
     void clear(FrameContext& frame, const VoxelRegion& region);
     /** Averages the fragments of one layer's meshes into the region, listing each voxel reached first into
@@ -46,6 +45,7 @@ private:
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;
     std::uint64_t m_dynamicVersion = 0;
+    std::uint64_t m_albedoSerial = 0; ///< the albedo texture m_framebuffer was made for
     bool m_conservative = false; ///< the voxelization mode of the last full rebuild
 };
 

@@ -41,6 +41,10 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
     textures.push_back({ "radiance", chain(n, 8, !bounced && !settings.anisotropicMips) });
     if (scene.areaLights)
         textures.push_back({ "opacity", chain(n, 4, true) }); // rgba8 per axis, the area lights' shadow cones
+    // Which cells above the occupied voxels the mip filter has listed, a bit per level (r32ui over level 1),
+    // for the volume cones trace: the bounce iteration's filter, or the first-bounce light's.
+    textures.push_back({ bounced ? "cell marks, bounced levels" : "cell marks, first-bounce levels",
+        chain(std::max<std::uint64_t>(n / 2, 1), 4, false) });
     if (settings.anisotropicMips && n >= 2)
         textures.push_back({ bounced ? "bounced, directional (+x -x +y -y +z -z)"
                                      : "radiance, directional (+x -x +y -y +z -z)",
