@@ -427,6 +427,11 @@ void Renderer::setTimesFromPreviousFrame(bool previousFrame)
         previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
 }
 
+void Renderer::setStagedRebuilds(bool staged)
+{
+    m_state->pipeline->setStagedRebuilds(staged);
+}
+
 void Renderer::setBounceIterationsPerFrame(int iterations)
 {
     m_state->bounceIterationsPerFrame = std::max(0, iterations);

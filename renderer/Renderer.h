@@ -95,6 +95,12 @@ public:
      * them all in the frame, from the first-bounce light, so a frame depends on its inputs alone.
      */
     void setBounceIterationsPerFrame(int iterations);
+    /**
+     * Splits a full rebuild over frames: voxelizing the whole grid and injecting its light run in frames of
+     * their own, while the last complete image is shown (FrameStats::deferred; an interactive host renders
+     * again until it is false). Off (the default): every frame is a complete image.
+     */
+    void setStagedRebuilds(bool staged);
     /** Mip levels of the radiance volume (0 before the first frame). */
     int voxelLevelCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */

@@ -8,6 +8,7 @@
 
 #include <QPainter>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -66,6 +67,11 @@ void ViewportOverlay::showFrame(const render::FrameStats& stats, bool interactiv
     for (const render::PassStats& pass : stats.passes)
         if (pass.name == "voxelize" && pass.action == "run")
             busy << tr("re-voxelizing");
+    // A staged rebuild shows the last complete image until its remaining passes have run.
+    const auto deferred = std::find_if(stats.passes.begin(), stats.passes.end(),
+        [](const render::PassStats& pass) { return pass.action == "deferred"; });
+    if (deferred != stats.passes.end())
+        busy << tr("rebuilding: %1 next").arg(QString::fromStdString(deferred->name));
     if (!stats.lightConverged)
         busy << tr("converging bounces: iteration %1, change %2%")
                     .arg(stats.bounceIterations)

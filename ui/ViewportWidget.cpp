@@ -84,8 +84,8 @@ ViewportWidget::ViewportWidget(doc::Document* document, QWidget* parent)
         }
         if (event.kind == Kind::Reset || event.kind == Kind::Camera)
             m_knownCamera = camera;
-        // These rebuild the voxels, which can take seconds on a fine grid: say so before the frame that
-        // blocks, so the window does not just freeze.
+        // These rebuild the voxels, which can take seconds on a fine grid: say so before the first of the
+        // frames the rebuild is split over (staged rebuilds).
         if (m_renderer
             && (event.kind == Kind::Reset || event.kind == Kind::Structure || event.kind == Kind::Settings)) {
             m_overlay->setBusy(tr("Rebuilding the voxels…"));
@@ -115,6 +115,9 @@ void ViewportWidget::initializeGL()
         m_renderer->setTimesFromPreviousFrame(true);
         // Bounces converge over frames: an edit shows at once, and the light settles while the view is idle.
         m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
+        // A full rebuild (a new scene, grid or voxel setting) is split over frames: the window stays
+        // responsive between them, showing the last complete image.
+        m_renderer->setStagedRebuilds(true);
         m_sync->apply(*m_renderer, true);
         m_error.clear();
     } catch (const std::exception& e) {
@@ -183,7 +186,7 @@ void ViewportWidget::paintGL()
         m_overlay->showFrame(
             stats, m_interactive, m_inspector.enabled ? QRect(0, 0, width() / 2, height()) : rect());
         refreshGizmo();
-        if (!stats.lightConverged)
+        if (!stats.lightConverged || stats.deferred)
             QTimer::singleShot(0, this, [this] { update(); });
     } catch (const std::exception& e) {
         m_error = QString::fromUtf8(e.what());
@@ -200,7 +203,9 @@ render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, ren
     // A frame rendered on request (export, comparison) reports its own times and has converged bounces.
     m_renderer->setTimesFromPreviousFrame(false);
     m_renderer->setBounceIterationsPerFrame(0);
+    m_renderer->setStagedRebuilds(false);
     const render::FrameStats frameStats = m_renderer->renderFrame(m_document->state().camera, width, height);
+    m_renderer->setStagedRebuilds(true);
     m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
     m_renderer->setTimesFromPreviousFrame(true);
     if (stats)

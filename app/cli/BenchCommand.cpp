@@ -183,7 +183,12 @@ int BenchCommand::run(int argc, char** argv)
                 "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
                 qPrintable(args[1]), width, height, settings.voxelResolution, frames,
                 context->description().c_str());
-            report = header + PlanBenchmark::markdown(results);
+            // The editor spreads bounce iterations over frames two at a time (ui/ViewportWidget).
+            constexpr int kEditorIterationsPerFrame = 2;
+            const std::vector<RebuildResult> rebuilds = PlanBenchmark::rebuilds(
+                renderer, scene.camera, width, height, kEditorIterationsPerFrame, std::max(1, frames / 2));
+            report = header + PlanBenchmark::markdown(results)
+                + PlanBenchmark::markdown(rebuilds, kEditorIterationsPerFrame);
         }
     } catch (const std::exception& e) {
         return fail(3, QString::fromUtf8(e.what()));

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
@@ -148,6 +149,77 @@ std::string PlanBenchmark::markdown(const std::vector<SequenceResult>& results)
                 p.gpuMs, p.reason.c_str());
             out << line;
         }
+    }
+    return out.str();
+}
+
+std::vector<RebuildResult> PlanBenchmark::rebuilds(render::Renderer& renderer, const render::Camera& camera,
+    int width, int height, int iterationsPerFrame, int rounds)
+{
+    using Clock = std::chrono::steady_clock;
+    std::vector<RebuildResult> results(2);
+    std::vector<double> longest[2], toImage[2], toConverged[2], framesToImage[2], framesToConverged[2];
+    renderer.setBounceIterationsPerFrame(iterationsPerFrame);
+    renderer.renderFrame(camera, width, height); // warm-up: shaders compiled
+    for (int round = 0; round < rounds; ++round)
+        for (const int staged : { 0, 1 }) {
+            renderer.setStagedRebuilds(staged == 1);
+            renderer.invalidate();
+            const Clock::time_point start = Clock::now();
+            double worst = 0.0;
+            int frames = 0;
+            bool imaged = false;
+            // Frame times are waited for (the default readback), so a frame's wall time is its whole cost.
+            for (render::FrameStats stats; !imaged || !stats.lightConverged;) {
+                const Clock::time_point begin = Clock::now();
+                stats = renderer.renderFrame(camera, width, height);
+                const Clock::time_point end = Clock::now();
+                worst = std::max(worst, std::chrono::duration<double, std::milli>(end - begin).count());
+                ++frames;
+                const double sinceStart = std::chrono::duration<double, std::milli>(end - start).count();
+                if (!imaged && !stats.deferred) {
+                    imaged = true;
+                    toImage[staged].push_back(sinceStart);
+                    framesToImage[staged].push_back(frames);
+                }
+                if (imaged && stats.lightConverged) {
+                    toConverged[staged].push_back(sinceStart);
+                    framesToConverged[staged].push_back(frames);
+                }
+            }
+            longest[staged].push_back(worst);
+        }
+    renderer.setStagedRebuilds(false);
+    renderer.setBounceIterationsPerFrame(0);
+    for (const int staged : { 0, 1 }) {
+        RebuildResult& r = results[std::size_t(staged)];
+        r.staged = staged == 1;
+        r.longestFrameMs = median(longest[staged]);
+        r.firstImageMs = median(toImage[staged]);
+        r.convergedMs = median(toConverged[staged]);
+        r.framesToImage = int(median(framesToImage[staged]));
+        r.framesToConverged = int(median(framesToConverged[staged]));
+    }
+    return results;
+}
+
+std::string PlanBenchmark::markdown(const std::vector<RebuildResult>& results, int iterationsPerFrame)
+{
+    std::ostringstream out;
+    char line[512];
+    std::snprintf(line, sizeof line,
+        "\n**A full rebuild as the editor draws it** (%d bounce iterations a frame; wall clock, medians over "
+        "the "
+        "rounds):\n\n| rebuild | longest frame ms | first complete image: frames, ms | converged: frames, ms "
+        "|\n"
+        "|---|---|---|---|\n",
+        iterationsPerFrame);
+    out << line;
+    for (const RebuildResult& r : results) {
+        std::snprintf(line, sizeof line, "| %s | %.0f | %d, %.0f | %d, %.0f |\n",
+            r.staged ? "staged over frames (the editor)" : "in one frame", r.longestFrameMs, r.framesToImage,
+            r.firstImageMs, r.framesToConverged, r.convergedMs);
+        out << line;
     }
     return out.str();
 }

@@ -29,6 +29,19 @@ struct SequenceResult {
 };
 
 /**
+ * A full rebuild drawn as the editor draws it (bounce iterations spread over frames): the frames from the
+ * rebuild to a complete image with converged bounces, one frame blocking the event loop at a time.
+ */
+struct RebuildResult {
+    bool staged = false; ///< Renderer::setStagedRebuilds
+    int framesToImage = 0; ///< frames until the first complete image (median over the rounds)
+    int framesToConverged = 0; ///< frames until the bounces converged too
+    double longestFrameMs = 0.0; ///< the longest frame, wall clock: how long the window is frozen at most
+    double firstImageMs = 0.0; ///< wall clock from the rebuild to the first complete image
+    double convergedMs = 0.0; ///< wall clock from the rebuild to converged bounces
+};
+
+/**
  * `vct-bench plan`: replays edit sequences (orbit the camera, move the light, drag the dynamic object, edit a
  * material, toggle a glossy material) on one renderer, first letting the plan reuse and skip passes, then
  * forcing every pass, and compares the GPU time per frame.
@@ -40,6 +53,13 @@ public:
     static SequenceResult run(render::Renderer& renderer, const render::Scene& scene,
         const EditSequence& sequence, int width, int height, int frames);
     static std::string markdown(const std::vector<SequenceResult>& results);
+    /**
+     * A full rebuild (every pass invalidated) drawn with @p iterationsPerFrame bounce iterations a frame,
+     * with and without staged rebuilds, alternating over @p rounds; medians over the rounds.
+     */
+    static std::vector<RebuildResult> rebuilds(render::Renderer& renderer, const render::Camera& camera,
+        int width, int height, int iterationsPerFrame, int rounds);
+    static std::string markdown(const std::vector<RebuildResult>& results, int iterationsPerFrame);
 };
 
 } // namespace vct::cli

@@ -125,8 +125,8 @@ int main(int argc, char** argv)
         const QString path = parser.value(screenshot);
         QObject::connect(window.viewport(), &vct::ui::ViewportWidget::frameRendered, &window,
             [&window, path, taken = false](const vct::render::FrameStats& stats) mutable {
-                // The picture a user waits for: full resolution, the bounces converged, taken once.
-                if (taken || window.viewport()->isInteractive() || !stats.lightConverged)
+                // The picture a user waits for: full resolution, complete, the bounces converged, taken once.
+                if (taken || window.viewport()->isInteractive() || !stats.lightConverged || stats.deferred)
                     return;
                 taken = true;
                 // Let the docks show this frame's figures before grabbing.

@@ -9,7 +9,8 @@ namespace vct::render {
 /** What one pass did in the last frame. */
 struct PassStats {
     std::string name;
-    std::string action; ///< "run", "reused" or "skipped"
+    /// "run", "reused", "skipped", or "deferred" (staged frames: it runs in the next frame)
+    std::string action;
     std::string reason;
     double gpuMs = 0.0; ///< GL timer query; 0 unless it ran (in the previous frame, see FrameStats).
 };
@@ -43,6 +44,9 @@ struct FrameStats {
     double bounceResidual = 0.0;
     bool lightConverged = true;
     bool bounceExtrapolated = false; ///< the geometric tail was added (bounceResidual is then its error)
+    /// Staged frames (Renderer::setStagedRebuilds): passes were deferred to the next frame, so the final
+    /// image is still the last complete one; render again to go on.
+    bool deferred = false;
 };
 
 } // namespace vct::render

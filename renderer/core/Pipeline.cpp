@@ -33,9 +33,24 @@ FrameStats Pipeline::execute(FrameContext& frame)
     FrameStats stats;
     std::vector<bool> ran(m_passes.size(), false);
     std::vector<gl::TimerQuery>& timers = m_timers[m_currentSet];
+    bool wholeGridRedone = false;
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
+        if (stats.deferred) {
+            stats.passes.push_back(
+                { pass.name(), "deferred", "a staged rebuild goes on in the next frame", 0.0 });
+            continue;
+        }
         PassDecision decision = pass.plan(frame);
+        if (m_staged && decision.action == PassDecision::Action::Run && pass.redoesWholeGrid(frame)) {
+            if (wholeGridRedone) {
+                stats.deferred = true;
+                stats.passes.push_back({ pass.name(), "deferred",
+                    "staged rebuild: the grid was already redone whole this frame", 0.0 });
+                continue;
+            }
+            wholeGridRedone = true;
+        }
         if (prepareTextures(pass, frame) && decision.action != PassDecision::Action::Skip) {
             // Its output went with the old textures.
             pass.invalidate();

@@ -25,6 +25,13 @@ public:
     /** Runs one frame and returns its decisions, with GPU times as setTimingReadback() says. */
     FrameStats execute(FrameContext& frame);
     void setTimingReadback(TimingReadback readback);
+    /**
+     * With staged rebuilds a frame ends before the second pass that would redo the whole voxel grid
+     * (RenderPass::redoesWholeGrid): that pass and the ones after it run in the next frame, and the final
+     * image stays the last complete one meanwhile (FrameStats::deferred). An interactive view stays
+     * responsive through a full rebuild; off by default, so one frame is always a complete image.
+     */
+    void setStagedRebuilds(bool staged) { m_staged = staged; }
     void invalidate();
     const std::vector<std::unique_ptr<RenderPass>>& passes() const { return m_passes; }
     /** Every texture the passes make; tools outside the pipeline register theirs here too. */
@@ -42,6 +49,7 @@ private:
     std::vector<bool> m_ranLastFrame;
     int m_currentSet = 0;
     TimingReadback m_readback = TimingReadback::ThisFrame;
+    bool m_staged = false;
 };
 
 } // namespace vct::render

@@ -50,6 +50,16 @@ public:
     }
     virtual void execute(FrameContext& frame) = 0;
     /**
+     * Whether the run plan() decided redoes the whole voxel grid (asked before execute()). With staged
+     * frames (Pipeline::setStagedRebuilds) the second such run in one frame waits for the next frame, so that
+     * a full rebuild is split over several short frames instead of blocking for the sum of them.
+     */
+    virtual bool redoesWholeGrid(const FrameContext& frame) const
+    {
+        (void)frame;
+        return false;
+    }
+    /**
      * Called instead of execute() when plan() skips the pass: forgets state kept for an effect the frame no
      * longer needs (its textures are freed by what textures() asks for).
      */

@@ -103,6 +103,11 @@ std::vector<TextureSlot> InjectLightPass::textures(const FrameContext& frame)
                                        : TextureDesc {} } };
 }
 
+bool InjectLightPass::redoesWholeGrid(const FrameContext& frame) const
+{
+    return regionToInject(frame).size() == VoxelRegion::whole(frame.voxels.frame.resolution).size();
+}
+
 PassDecision InjectLightPass::plan(const FrameContext& frame) const
 {
     if (keyOf(frame) == m_key)

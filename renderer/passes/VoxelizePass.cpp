@@ -53,6 +53,13 @@ std::vector<TextureSlot> VoxelizePass::textures(const FrameContext& frame)
                      : TextureDesc {} } };
 }
 
+bool VoxelizePass::redoesWholeGrid(const FrameContext& frame) const
+{
+    // As execute() decides: a static change or a new mode rebuilds everything, anything else a region.
+    return m_staticGeometry != frame.versions.staticGeometry
+        || m_conservative != frame.settings.conservativeVoxelization;
+}
+
 void VoxelizePass::ensureResources(FrameContext& frame)
 {
     if (!m_voxelize) {

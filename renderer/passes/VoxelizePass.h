@@ -23,6 +23,7 @@ public:
     std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
+    bool redoesWholeGrid(const FrameContext& frame) const override;
     void invalidate() override { m_staticGeometry = m_staticMaterials = m_dynamicVersion = 0; }
 
 private:

@@ -38,6 +38,7 @@ private slots:
     void irradianceCacheFollowsTheLight();
     void timesCanComeFromThePreviousFrame();
     void renamesChangeNothingTheRendererHas();
+    void stagedRebuildSplitsOnlyFullRebuilds();
 
 private:
     render::FrameStats planned();
@@ -601,6 +602,40 @@ void RenderPlanTest::renamesChangeNothingTheRendererHas()
     planned();
     expectAction("voxelize", "run");
     expectSameAsForced("dynamic flag");
+}
+
+// Issue 20: an interactive view splits a full rebuild over frames instead of blocking for all of it. The
+// first frame voxelizes the grid and stops before the second whole-grid pass; the next one finishes, and
+// its image is the one a single complete frame gives. Edits that redo only part of the grid are not split,
+// so moving a light or an object costs no extra frame.
+void RenderPlanTest::stagedRebuildSplitsOnlyFullRebuilds()
+{
+    m_gl.renderer->setStagedRebuilds(true);
+    m_gl.renderer->setScene(m_scene);
+    planned();
+    QVERIFY(m_last.deferred);
+    expectAction("voxelize", "run");
+    expectAction("inject light", "deferred");
+    expectAction("composite", "deferred");
+    planned();
+    QVERIFY(!m_last.deferred);
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "run");
+    expectAction("composite", "run");
+
+    m_scene.pointLights[0].position += glm::vec3(-0.05f, 0.02f, 0.0f);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
+    planned();
+    QVERIFY(!m_last.deferred);
+    expectAction("inject light", "run");
+    m_gl.renderer->setMeshTransform(
+        std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0.0f, -0.1f)));
+    planned();
+    QVERIFY(!m_last.deferred);
+    expectAction("voxelize", "run");
+    expectAction("composite", "run");
+    m_gl.renderer->setStagedRebuilds(false);
+    expectSameAsForced("after a staged rebuild");
 }
 
 QTEST_GUILESS_MAIN(RenderPlanTest)

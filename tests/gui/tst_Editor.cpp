@@ -471,13 +471,25 @@ void EditorTest::overlayShowsSelectionLightsAndFigures()
     m_window->document()->undoStack()->undo();
     QVERIFY(waitForFrame());
 
-    // A rebuild says so before the frame that blocks, and the message goes with that frame.
+    // A rebuild says so before its first frame, and the message goes with that frame. The rebuild is split
+    // over frames (issue 20: no frozen window): the first voxelizes and keeps the last complete image,
+    // saying what comes next, and the viewport renders the rest by itself until the image is complete.
     render::RenderSettings settings = m_window->document()->state().settings;
     settings.voxelResolution = settings.voxelResolution == 32 ? 64 : 32;
+    std::vector<render::FrameStats> frames;
+    const QMetaObject::Connection counting = connect(m_window->viewport(), &ui::ViewportWidget::frameRendered,
+        this, [&frames](const render::FrameStats& stats) { frames.push_back(stats); });
     m_window->document()->setSettings(settings);
     QCOMPARE(overlay->busyText(), QStringLiteral("Rebuilding the voxels…"));
-    QVERIFY(waitForFrame());
+    QTRY_VERIFY_WITH_TIMEOUT(!frames.empty(), 20000);
     QVERIFY(overlay->busyText().isEmpty());
+    QVERIFY(frames.front().deferred);
+    QCOMPARE(frames.front().voxelResolution, settings.voxelResolution);
+    QVERIFY2(overlay->statusText().contains(QStringLiteral("rebuilding: inject light next")),
+        qPrintable(overlay->statusText()));
+    QTRY_VERIFY_WITH_TIMEOUT(!frames.back().deferred, 20000);
+    disconnect(counting);
+    QVERIFY(!overlay->statusText().contains(QStringLiteral("rebuilding:")));
     m_window->document()->undoStack()->undo();
     QVERIFY(waitForFrame());
 }
