@@ -115,9 +115,6 @@ void ViewportWidget::initializeGL()
         m_renderer->setTimesFromPreviousFrame(true);
         // Bounces converge over frames: an edit shows at once, and the light settles while the view is idle.
         m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
-        // A full rebuild (a new scene, grid or voxel setting) is split over frames: the window stays
-        // responsive between them, showing the last complete image.
-        m_renderer->setStagedRebuilds(true);
         m_sync->apply(*m_renderer, true);
         m_error.clear();
     } catch (const std::exception& e) {
@@ -160,6 +157,10 @@ void ViewportWidget::paintGL()
         const float scale = m_interactive ? kInteractiveScale : 1.0f;
         const int w = std::max(1, int(std::lround(trace.width() * scale)));
         const int h = std::max(1, int(std::lround(trace.height() * scale)));
+        // A full rebuild (a new scene, grid or voxel setting) is split over frames: the window stays
+        // responsive between them, showing the last complete image. Not while something is being dragged:
+        // every move would start the rebuild again, and its image would never come.
+        m_renderer->setStagedRebuilds(!m_interactive);
         const render::FrameStats stats = m_renderer->renderFrame(m_document->state().camera, w, h);
         const float exposure = m_document->state().settings.exposure;
         m_renderer->present(
@@ -205,7 +206,6 @@ render::RadianceImage ViewportWidget::renderFullFrame(int width, int height, ren
     m_renderer->setBounceIterationsPerFrame(0);
     m_renderer->setStagedRebuilds(false);
     const render::FrameStats frameStats = m_renderer->renderFrame(m_document->state().camera, width, height);
-    m_renderer->setStagedRebuilds(true);
     m_renderer->setBounceIterationsPerFrame(kBounceIterationsPerFrame);
     m_renderer->setTimesFromPreviousFrame(true);
     if (stats)

@@ -33,7 +33,7 @@ FrameStats Pipeline::execute(FrameContext& frame)
     FrameStats stats;
     std::vector<bool> ran(m_passes.size(), false);
     std::vector<gl::TimerQuery>& timers = m_timers[m_currentSet];
-    bool wholeGridRedone = false;
+    bool wholeGridRedone = false, endAfter = false;
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
         if (stats.deferred) {
@@ -50,6 +50,8 @@ FrameStats Pipeline::execute(FrameContext& frame)
                 continue;
             }
             wholeGridRedone = true;
+            // While a rebuild goes on each whole-grid step gets a frame of its own, the screen passes too.
+            endAfter = m_rebuilding;
         }
         if (prepareTextures(pass, frame) && decision.action != PassDecision::Action::Skip) {
             // Its output went with the old textures.
@@ -70,7 +72,11 @@ FrameStats Pipeline::execute(FrameContext& frame)
             pass.release(frame);
         }
         stats.passes.push_back(entry);
+        if (endAfter)
+            stats.deferred = i + 1 < m_passes.size();
+        endAfter = false;
     }
+    m_rebuilding = stats.deferred;
     const bool previous = m_readback == TimingReadback::PreviousFrame;
     // The previous frame's queries finished with it, so reading them does not wait for this frame's work.
     const std::vector<gl::TimerQuery>& results = previous ? m_timers[1 - m_currentSet] : timers;

@@ -28,8 +28,11 @@ public:
     /**
      * With staged rebuilds a frame ends before the second pass that would redo the whole voxel grid
      * (RenderPass::redoesWholeGrid): that pass and the ones after it run in the next frame, and the final
-     * image stays the last complete one meanwhile (FrameStats::deferred). An interactive view stays
-     * responsive through a full rebuild; off by default, so one frame is always a complete image.
+     * image stays the last complete one meanwhile (FrameStats::deferred). While such a rebuild goes on, a
+     * frame also ends right after its whole-grid step, so each step, and then the screen passes, get a frame
+     * of their own; edits that redo the grid once (a light, a dragged object) are never split. An
+     * interactive view stays responsive through a full rebuild; off by default, so one frame is always a
+     * complete image.
      */
     void setStagedRebuilds(bool staged) { m_staged = staged; }
     void invalidate();
@@ -50,6 +53,7 @@ private:
     int m_currentSet = 0;
     TimingReadback m_readback = TimingReadback::ThisFrame;
     bool m_staged = false;
+    bool m_rebuilding = false; ///< the last frame deferred passes: a staged rebuild is going on
 };
 
 } // namespace vct::render

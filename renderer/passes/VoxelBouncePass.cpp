@@ -240,6 +240,20 @@ void VoxelBouncePass::judge(const Change& change, double tolerance)
         && m_residual * (m_tail > 0.0 ? m_tail : 1.0) < tolerance;
 }
 
+bool VoxelBouncePass::cellsOutdated(const VoxelVolume& v) const
+{
+    // New textures (the pipeline makes them as textures() says) need their cells found again too.
+    return v.materialsVersion != m_listedMaterials || v.bounced.serial() != m_bouncedSerial
+        || v.bounceIrradiance.serial() != m_cellsSerial;
+}
+
+bool VoxelBouncePass::redoesWholeGrid(const FrameContext& frame) const
+{
+    // New voxels: every occupied cell is found again and the solve starts over from the first bounce. A light
+    // edit over the same voxels starts from the last solve instead, and is not a rebuild.
+    return cellsOutdated(frame.voxels);
+}
+
 void VoxelBouncePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
@@ -251,9 +265,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
-    // New textures (the pipeline makes them as textures() says) need their cells found again.
-    const bool voxelsChanged = v.materialsVersion != m_listedMaterials
-        || v.bounced.serial() != m_bouncedSerial || v.bounceIrradiance.serial() != m_cellsSerial;
+    const bool voxelsChanged = cellsOutdated(v);
     if (voxelsChanged) {
         m_bouncedSerial = v.bounced.serial();
         m_cellsSerial = v.bounceIrradiance.serial();

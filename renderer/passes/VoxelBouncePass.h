@@ -36,6 +36,7 @@ public:
     std::vector<TextureSlot> textures(const FrameContext& frame) override;
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
+    bool redoesWholeGrid(const FrameContext& frame) const override;
     void release(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
 
@@ -49,6 +50,8 @@ private:
         bool operator==(const SolveKey& other) const = default;
     };
     static SolveKey keyOf(const FrameContext& frame);
+    /** Whether the voxels changed since the cells were found (or their textures were made anew). */
+    bool cellsOutdated(const VoxelVolume& voxels) const;
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
     /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */

@@ -65,9 +65,7 @@ private:
 
 bool EditorTest::waitForFrame()
 {
-    QSignalSpy spy(m_window->viewport(), &ui::ViewportWidget::frameRendered);
-    m_window->viewport()->update();
-    return spy.wait(20000);
+    return test::nextFrame(*m_window).width > 0;
 }
 
 double EditorTest::meanRadiance()

@@ -14,6 +14,7 @@
 #include <QtGlobal>
 
 #include <memory>
+#include <optional>
 
 namespace vct::test {
 
@@ -53,14 +54,33 @@ inline std::unique_ptr<ui::MainWindow> showEditor(const QString& scene, QSize si
     return window;
 }
 
-/** The stats of the next frame the viewport of @p window renders, or empty stats if none comes in 20 s. */
-inline render::FrameStats nextFrame(ui::MainWindow& window)
+/** The stats of the very next frame the viewport renders, complete or not, or empty stats after 20 s. */
+inline render::FrameStats firstFrame(ui::MainWindow& window)
 {
     QSignalSpy spy(window.viewport(), &ui::ViewportWidget::frameRendered);
     window.viewport()->update();
     if (!spy.wait(20000))
         return {};
     return spy.first().first().value<render::FrameStats>();
+}
+
+/**
+ * The stats of the next complete frame the viewport of @p window renders, or empty stats (width 0) if none
+ * comes in 20 s. A staged rebuild's deferred frames are passed over: the viewport renders them by itself.
+ */
+inline render::FrameStats nextFrame(ui::MainWindow& window)
+{
+    std::optional<render::FrameStats> complete;
+    const QMetaObject::Connection watching = QObject::connect(window.viewport(),
+        &ui::ViewportWidget::frameRendered, window.viewport(), [&complete](const render::FrameStats& stats) {
+            if (!complete && !stats.deferred)
+                complete = stats;
+        });
+    window.viewport()->update();
+    if (!QTest::qWaitFor([&complete] { return complete.has_value(); }, 20000))
+        complete.reset();
+    QObject::disconnect(watching);
+    return complete.value_or(render::FrameStats {});
 }
 
 /** The first node whose name starts with @p prefix, or -1. */
