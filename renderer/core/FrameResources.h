@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/DirectionalStack.glsl"
 #include "core/OccupiedCellList.h"
 #include "core/ResourceTable.h"
 #include "core/VoxelGridFrame.h"
@@ -17,7 +18,7 @@
 namespace vct::render {
 
 /** Tiles of VoxelVolume::directional: one per direction a cone can travel along an axis. */
-constexpr int kDirectionalTiles = 6;
+constexpr int kDirectionalTiles = STACK_TILES;
 
 /** How far the bounce iteration (passes/VoxelBouncePass) has come for the current first-bounce radiance. */
 struct BounceProgress {
@@ -45,8 +46,9 @@ struct VoxelVolume {
     /// trace it (common/AreaLights.glsl); built by light injection when there are area lights.
     gl::Texture opacity;
     std::uint64_t opacityVersion = 0; ///< the materialsVersion `opacity` was built for
-    /// With anisotropic mips: levels 1..N for cones travelling +x, -x, +y, -y, +z, -z (texture level k = grid
-    /// level k+1), as six tiles of one gl::Texture::create3DStack in that order (kDirectionalTiles).
+    /// With anisotropic mips: levels 1..N-1 for cones travelling +x, -x, +y, -y, +z, -z (texture level k =
+    /// grid level k+1; a cone wanting the grid's top level N reads N-1), as six tiles of one
+    /// gl::Texture::create3DStack in that order (kDirectionalTiles).
     gl::Texture directional;
     /// With bounces != 1 (VoxelBouncePass): the radiance after the bounce iteration, L = L_direct + albedo *
     /// (what the cells gathered from the previous iterate), and its directional chains when anisotropic (then

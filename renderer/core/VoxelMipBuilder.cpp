@@ -10,10 +10,11 @@ namespace vct::render {
 
 gl::TextureDesc VoxelMipBuilder::directionalDesc(int resolution, int levelCount)
 {
-    if (levelCount < 2)
+    // From grid level 1 down to tiles two texels wide (shaders/common/DirectionalStack.glsl): the grid's
+    // levels but its finest and its coarsest.
+    if (levelCount < 3)
         return {};
-    return gl::TextureDesc::volumeStack(
-        GL_RGBA16F, std::max(1, resolution / 2), kDirectionalTiles, levelCount - 1);
+    return gl::TextureDesc::volumeStack(GL_RGBA16F, resolution / 2, kDirectionalTiles, levelCount - 2);
 }
 
 gl::TextureDesc VoxelMipBuilder::marksDesc(int resolution)
@@ -79,11 +80,13 @@ void VoxelMipBuilder::buildDirectional(
             { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
     }
     // The chains start at grid level 1, from the source's level 0 alone: a source without box levels will do.
-    const int levels = int(m_levelCells.size());
-    if (levels < 1)
+    // They stop a level short of the grid's (directionalDesc).
+    const gl::TextureDesc wanted = directionalDesc(resolution, int(m_levelCells.size()) + 1);
+    if (!wanted)
         return;
-    if (directional.desc() != directionalDesc(resolution, levels + 1))
+    if (directional.desc() != wanted)
         throw std::logic_error("the directional chains are not made for this grid");
+    const int levels = wanted.levels;
     for (int level = 0; level < levels; ++level) {
         // The gaps between tiles are cleared too, as they must read empty.
         glClearTexImage(directional.id(), level, GL_RGBA, GL_FLOAT, nullptr);

@@ -132,7 +132,9 @@ Texture Texture::create3D(GLenum internalFormat, int size, int levels)
 
 Texture Texture::create3DStack(GLenum internalFormat, int size, int tiles, int levels)
 {
-    const int depth = (2 * tiles - 1) * size;
+    if (size % 2 != 0 || levels < 1 || (size >> (levels - 1)) < 2)
+        throw std::logic_error("a tile stack needs tiles at least two texels wide at every level");
+    const int depth = (3 * tiles - 1) * size / 2;
     Texture t(GL_TEXTURE_3D, internalFormat, size, size, depth, levels);
     glTextureStorage3D(t.id(), levels, internalFormat, size, size, depth);
     t.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);

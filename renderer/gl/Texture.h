@@ -27,10 +27,11 @@ public:
     /**
      * `tiles` cubic volumes of side `size` stacked along z in one mipmapped 3D texture, filtered and bordered
      * like create3D. Shaders pick a tile by coordinate, which costs nothing, where picking one of several
-     * samplers per pixel costs a fetch from each (llvmpipe). Tile k starts at z = 2k*size: between tiles lies
-     * an empty (zeroed, never written) gap as deep as a tile, so at every level a trilinear lookup past a
+     * samplers per pixel costs a fetch from each (llvmpipe). Tile k starts at z = 3k*size/2: between tiles
+     * lies an empty (zeroed, never written) gap half a tile deep, so at every level a trilinear lookup past a
      * tile's end reads zeros, exactly as the border of a texture of its own would give, and the levels halve
-     * tiles and gaps alike. Depth (2*tiles - 1)*size; `levels` at most log2(size) + 1.
+     * tiles and gaps alike (shaders/common/DirectionalStack.glsl). Depth (3*tiles - 1)*size/2; `size` even
+     * and `levels` at most log2(size), so the smallest tiles are two texels wide and their gaps one.
      */
     static Texture create3DStack(GLenum internalFormat, int size, int tiles, int levels);
 

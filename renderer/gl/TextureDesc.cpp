@@ -49,8 +49,9 @@ std::uint64_t TextureDesc::byteSize() const
 {
     if (kind == Kind::None)
         return 0;
-    // Texel depth of level 0: stacks keep an empty gap between tiles, cube arrays six faces per cube.
-    std::uint64_t d = kind == Kind::VolumeStack ? std::uint64_t(2 * depth - 1) * std::uint64_t(width)
+    // Texel depth of level 0: stacks keep an empty gap of half a tile between tiles, cube arrays six faces
+    // per cube.
+    std::uint64_t d = kind == Kind::VolumeStack ? std::uint64_t(3 * depth - 1) * std::uint64_t(width) / 2
         : kind == Kind::CubeArray               ? 6 * std::uint64_t(depth)
                                                 : std::uint64_t(depth);
     const bool volumetric = kind == Kind::Volume || kind == Kind::VolumeStack;

@@ -15,16 +15,16 @@ layout(binding = 5) uniform sampler3D uRadiance;
 // A compile-time variant, not a uniform branch: llvmpipe ran both sides of the branch and the plain
 // path cost six times as much.
 // The six chains are tiles of one texture stacked along z (+x, -x, +y, -y, +z, -z; VoxelVolume::directional),
-// tile k from z = 2k tiles, empty gaps between: a cone picks its side of each axis by coordinate. With six
+// empty gaps between (common/DirectionalStack.glsl): a cone picks its side of each axis by coordinate. With six
 // samplers, picking per pixel fetched from both sides of every axis: the cone pass took 1.7 times as long
 // (docs/DESIGN.md, "Measured choices").
+#include "common/DirectionalStack.glsl"
 layout(binding = 6) uniform sampler3D uTowards;
 
 // Chain `tile` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a texture of its own has.
 vec4 sampleTowards(int tile, vec3 uvw, float l)
 {
-    const float kStackDepth = 11.0; // tiles: six, and the five gaps between them
-    uvw.z = (uvw.z + 2.0 * float(tile)) * (1.0 / kStackDepth);
+    uvw.z = (uvw.z + 0.5 * float(STACK_STRIDE_HALVES * tile)) * (2.0 / float(STACK_DEPTH_HALVES));
     return textureLod(uTowards, uvw, l);
 }
 #endif

@@ -2,13 +2,13 @@
 // chain): all six start from the same eight children of the isotropic level 0, so fetching them once instead
 // of once per direction takes the 3D fetches of the largest directional level from 48 to 8 per texel.
 // Over the listed cells only (common/OccupiedCells.glsl, VoxelMipBuilder); the level is cleared first.
+#include "common/DirectionalStack.glsl"
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;
 
 layout(binding = 0) uniform sampler3D uSource; // premultiplied radiance, a = opacity
-// The six chains' first level as tiles stacked along z, tile k from z = 2k tiles: +x, -x, +y, -y, +z, -z
-// (gl::Texture::create3DStack).
+// The six chains' first level as tiles stacked along z: +x, -x, +y, -y, +z, -z (common/DirectionalStack.glsl).
 layout(rgba16f, binding = 0) writeonly uniform image3D uTowards;
 
 vec4 children[8]; // index x + 2y + 4z
@@ -39,7 +39,7 @@ void main()
         children[i] = texelFetch(uSource, voxel * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2), 0);
     // Spelled out, not looped: with constant arguments composite() indexes children[] statically, which
     // llvmpipe turns into registers; a loop variable made it index memory and doubled the mip pass.
-    ivec3 tile = ivec3(0, 0, 2 * tileSize); // the stride: a tile and the empty gap after it
+    ivec3 tile = ivec3(0, 0, STACK_STRIDE_HALVES * tileSize / 2); // the stride: a tile and the gap after it
     imageStore(uTowards, voxel, composite(0, true));
     imageStore(uTowards, voxel + tile, composite(0, false));
     imageStore(uTowards, voxel + 2 * tile, composite(1, true));

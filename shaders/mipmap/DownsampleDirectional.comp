@@ -1,9 +1,10 @@
 // One level of the six direction-dependent mip chains (Crassin et al.'s anisotropic voxels), all tiles of the
-// stack (gl::Texture::create3DStack: tile k starts at z = 2k tiles) in one dispatch: for a cone travelling
+// stack (common/DirectionalStack.glsl) in one dispatch: for a cone travelling
 // along +-axis, each pair of children along that axis is composited front to back before the four pairs are
 // averaged, so a thin wall facing the cone stays opaque at coarse levels instead of fading to 1/2^k.
 // One invocation per listed cell (common/OccupiedCells.glsl, VoxelMipBuilder) for all six tiles; the level is
 // cleared first.
+#include "common/DirectionalStack.glsl"
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;
@@ -12,7 +13,6 @@ layout(binding = 0) uniform sampler3D uSource; // the stack itself, read one lev
 layout(rgba16f, binding = 0) writeonly uniform image3D uTarget;
 uniform int uSourceLevel;
 
-const int kTiles = 6; // +x, -x, +y, -y, +z, -z
 
 // Texel `voxel` of chain `tile` at the level written, tiles tileSize wide.
 vec4 towards(int tile, ivec3 voxel, int tileSize)
@@ -22,7 +22,7 @@ vec4 towards(int tile, ivec3 voxel, int tileSize)
     ivec3 along = ivec3(axis == 0, axis == 1, axis == 2);
     ivec3 u = ivec3(axis == 1, axis == 2, axis == 0);
     ivec3 v = ivec3(axis == 2, axis == 0, axis == 1);
-    ivec3 base = voxel * 2 + ivec3(0, 0, 2 * tile * tileSize * 2); // tile k starts at z = 2k tiles
+    ivec3 base = voxel * 2 + ivec3(0, 0, STACK_STRIDE_HALVES * tile * tileSize); // the tile one level finer
     ivec3 frontOffset = positive ? ivec3(0) : along;
     ivec3 backOffset = positive ? along : ivec3(0);
     vec4 sum = vec4(0.0);
@@ -41,6 +41,7 @@ void main()
     ivec3 voxel;
     if (!occupiedCell(voxel))
         return;
-    for (int tile = 0; tile < kTiles; ++tile)
-        imageStore(uTarget, voxel + ivec3(0, 0, 2 * tile * tileSize), towards(tile, voxel, tileSize));
+    for (int tile = 0; tile < STACK_TILES; ++tile)
+        imageStore(uTarget, voxel + ivec3(0, 0, STACK_STRIDE_HALVES * tile * tileSize / 2),
+            towards(tile, voxel, tileSize));
 }
