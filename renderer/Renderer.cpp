@@ -1,7 +1,5 @@
 #include "Renderer.h"
 
-#include "common/DirectionalStack.glsl"
-
 #include "scene/CameraBasis.h"
 
 #include "core/ConeSet.h"
@@ -481,12 +479,12 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
             if (!v.directional || level < 1 || level - 1 >= v.directional.levels())
                 throw std::invalid_argument("no " + channel + " level " + std::to_string(level)
                     + " (needs anisotropic mips, levels from 1)");
-            // Tile d is the slab from z = 3d/2 tiles (common/DirectionalStack.glsl).
+            // Tile d starts d strides in (scene/DirectionalStackLayout.h).
             size = std::max(1, v.directional.width() >> (level - 1));
             std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
             glGetTextureSubImage(v.directional.id(), level - 1, 0, 0,
-                GLint(STACK_STRIDE_HALVES * d) * size / 2, size, size, size, GL_RGBA, GL_FLOAT,
-                GLsizei(data.size() * sizeof(float)), data.data());
+                GLint(d) * (size + (size >> v.directional.desc().gapShift)), size, size, size, GL_RGBA,
+                GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
             return data;
         }
     if (channel == "emission" && !v.emission && v.albedo) {

@@ -36,8 +36,13 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
 
     v.coneRadiance().bindUnit(5);
-    if (anisotropic)
-        v.coneDirectional().bindUnit(6);
+    if (anisotropic) {
+        const gl::Texture& directional = v.coneDirectional();
+        directional.bindUnit(6);
+        const gl::TextureDesc& stack = directional.desc();
+        const float gap = float(stack.width >> stack.gapShift) / float(std::max(stack.width, 1));
+        program.set("uStack", glm::vec2(1.0f + gap, float(stack.depth) + float(stack.depth - 1) * gap));
+    }
 }
 
 float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame)

@@ -2,19 +2,20 @@
 
 #include "core/FrameResources.h"
 #include "core/ShaderLibrary.h"
+#include "scene/DirectionalStackLayout.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 namespace vct::render {
 
-gl::TextureDesc VoxelMipBuilder::directionalDesc(int resolution, int levelCount)
+gl::TextureDesc VoxelMipBuilder::directionalDesc(int resolution)
 {
-    // From grid level 1 down to tiles two texels wide (shaders/common/DirectionalStack.glsl): the grid's
-    // levels but its finest and its coarsest.
-    if (levelCount < 3)
+    const DirectionalStackLayout layout = DirectionalStackLayout::of(resolution);
+    if (layout.levels < 1)
         return {};
-    return gl::TextureDesc::volumeStack(GL_RGBA16F, resolution / 2, kDirectionalTiles, levelCount - 2);
+    return gl::TextureDesc::volumeStack(
+        GL_RGBA16F, layout.size, kDirectionalTiles, layout.levels, layout.gapShift);
 }
 
 gl::TextureDesc VoxelMipBuilder::marksDesc(int resolution)
@@ -80,8 +81,8 @@ void VoxelMipBuilder::buildDirectional(
             { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
     }
     // The chains start at grid level 1, from the source's level 0 alone: a source without box levels will do.
-    // They stop a level short of the grid's (directionalDesc).
-    const gl::TextureDesc wanted = directionalDesc(resolution, int(m_levelCells.size()) + 1);
+    // They stop where their tiles' gaps are one texel (directionalDesc).
+    const gl::TextureDesc wanted = directionalDesc(resolution);
     if (!wanted)
         return;
     if (directional.desc() != wanted)
@@ -101,6 +102,9 @@ void VoxelMipBuilder::buildDirectional(
             directional.bindUnit(0);
             filter.set("uSourceLevel", level - 1);
         }
+        // From one tile's start to the next at the level written (the source's is twice that).
+        const int side = wanted.width >> level;
+        filter.set("uTileStride", side + (side >> wanted.gapShift));
         directional.bindImage(0, level, GL_WRITE_ONLY);
         m_levelCells[std::size_t(level)].dispatchOverCells();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

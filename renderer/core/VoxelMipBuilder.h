@@ -36,10 +36,10 @@ public:
     void buildDirectional(
         const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
     /**
-     * The six directional chains of a grid of @p resolution with @p levelCount levels: one stack of tiles
-     * from grid level 1 (texture level k = grid level k + 1); empty for a grid of one level.
+     * The six directional chains of a grid of @p resolution: one stack of tiles from grid level 1 (texture
+     * level k = grid level k + 1), laid out by scene/DirectionalStackLayout.h; empty for a grid too small.
      */
-    static gl::TextureDesc directionalDesc(int resolution, int levelCount);
+    static gl::TextureDesc directionalDesc(int resolution);
     /** The scratch texture listCells() marks listed cells in, for a grid of @p resolution. */
     static gl::TextureDesc marksDesc(int resolution);
     /** Where the marks live: its owner's textures() lists it, so the pipeline makes it as marksDesc() says.

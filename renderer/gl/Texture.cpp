@@ -72,7 +72,7 @@ Texture Texture::create(const TextureDesc& desc)
         t = create3D(desc.format, desc.width, desc.levels);
         break;
     case Kind::VolumeStack:
-        t = create3DStack(desc.format, desc.width, desc.depth, desc.levels);
+        t = create3DStack(desc.format, desc.width, desc.depth, desc.levels, desc.gapShift);
         break;
     case Kind::CubeArray:
         t = createCubeArray(desc.format, desc.width, desc.depth);
@@ -130,11 +130,11 @@ Texture Texture::create3D(GLenum internalFormat, int size, int levels)
     return t;
 }
 
-Texture Texture::create3DStack(GLenum internalFormat, int size, int tiles, int levels)
+Texture Texture::create3DStack(GLenum internalFormat, int size, int tiles, int levels, int gapShift)
 {
-    if (size % 2 != 0 || levels < 1 || (size >> (levels - 1)) < 2)
-        throw std::logic_error("a tile stack needs tiles at least two texels wide at every level");
-    const int depth = (3 * tiles - 1) * size / 2;
+    if (levels < 1 || gapShift < 0 || size % (1 << gapShift) != 0 || ((size >> (levels - 1)) >> gapShift) < 1)
+        throw std::logic_error("a tile stack needs a gap of at least one texel at every level");
+    const int depth = tiles * size + (tiles - 1) * (size >> gapShift);
     Texture t(GL_TEXTURE_3D, internalFormat, size, size, depth, levels);
     glTextureStorage3D(t.id(), levels, internalFormat, size, size, depth);
     t.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);

@@ -27,13 +27,12 @@ public:
     /**
      * `tiles` cubic volumes of side `size` stacked along z in one mipmapped 3D texture, filtered and bordered
      * like create3D. Shaders pick a tile by coordinate, which costs nothing, where picking one of several
-     * samplers per pixel costs a fetch from each (llvmpipe). Tile k starts at z = 3k*size/2: between tiles
-     * lies an empty (zeroed, never written) gap half a tile deep, so at every level a trilinear lookup past a
-     * tile's end reads zeros, exactly as the border of a texture of its own would give, and the levels halve
-     * tiles and gaps alike (shaders/common/DirectionalStack.glsl). Depth (3*tiles - 1)*size/2; `size` even
-     * and `levels` at most log2(size), so the smallest tiles are two texels wide and their gaps one.
+     * samplers per pixel costs a fetch from each (llvmpipe). Between tiles lies an empty (zeroed, never
+     * written) gap of size >> gapShift texels, so at every level a trilinear lookup past a tile's end reads
+     * zeros, exactly as the border of a texture of its own would give, and the levels halve tiles and gaps
+     * alike (scene/DirectionalStackLayout.h). The gap must be at least one texel at every level.
      */
-    static Texture create3DStack(GLenum internalFormat, int size, int tiles, int levels);
+    static Texture create3DStack(GLenum internalFormat, int size, int tiles, int levels, int gapShift);
 
     GLuint id() const { return m_handle.id(); }
     GLenum target() const { return m_target; }

@@ -13,7 +13,7 @@ TextureDesc TextureDesc::plane(GLenum format, int width, int height)
 
 TextureDesc TextureDesc::planeArray(GLenum format, int width, int height, int layers)
 {
-    return { Kind::PlaneArray, format, width, height, layers, 1, Sampling::Nearest };
+    return { Kind::PlaneArray, format, width, height, layers, 1, 0, Sampling::Nearest };
 }
 
 TextureDesc TextureDesc::volume(GLenum format, int size, int levels)
@@ -21,14 +21,14 @@ TextureDesc TextureDesc::volume(GLenum format, int size, int levels)
     return { Kind::Volume, format, size, size, size, levels };
 }
 
-TextureDesc TextureDesc::volumeStack(GLenum format, int size, int tiles, int levels)
+TextureDesc TextureDesc::volumeStack(GLenum format, int size, int tiles, int levels, int gapShift)
 {
-    return { Kind::VolumeStack, format, size, size, tiles, levels };
+    return { Kind::VolumeStack, format, size, size, tiles, levels, gapShift };
 }
 
 TextureDesc TextureDesc::cubeArray(GLenum format, int size, int cubes)
 {
-    return { Kind::CubeArray, format, size, size, cubes, 1, Sampling::Nearest };
+    return { Kind::CubeArray, format, size, size, cubes, 1, 0, Sampling::Nearest };
 }
 
 TextureDesc TextureDesc::sampled(Sampling how) const
@@ -49,11 +49,11 @@ std::uint64_t TextureDesc::byteSize() const
 {
     if (kind == Kind::None)
         return 0;
-    // Texel depth of level 0: stacks keep an empty gap of half a tile between tiles, cube arrays six faces
-    // per cube.
-    std::uint64_t d = kind == Kind::VolumeStack ? std::uint64_t(3 * depth - 1) * std::uint64_t(width) / 2
-        : kind == Kind::CubeArray               ? 6 * std::uint64_t(depth)
-                                                : std::uint64_t(depth);
+    // Texel depth of level 0: stacks keep an empty gap between tiles, cube arrays six faces per cube.
+    std::uint64_t d = kind == Kind::VolumeStack ? std::uint64_t(depth) * std::uint64_t(width)
+            + std::uint64_t(depth - 1) * std::uint64_t(width >> gapShift)
+        : kind == Kind::CubeArray ? 6 * std::uint64_t(depth)
+                                  : std::uint64_t(depth);
     const bool volumetric = kind == Kind::Volume || kind == Kind::VolumeStack;
     std::uint64_t w = std::uint64_t(width), h = std::uint64_t(height), total = 0;
     for (int level = 0; level < levels; ++level) {

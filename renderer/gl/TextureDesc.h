@@ -31,6 +31,7 @@ struct TextureDesc {
     int width = 0, height = 0;
     int depth = 1; ///< volumes: their side; arrays: layers; cube arrays: cubes; stacks: tiles
     int levels = 1;
+    int gapShift = 0; ///< stacks: the gap between tiles is width >> gapShift texels
     Sampling sampling = Sampling::Filtered;
     /// Cleared to zero when made, and that is valid content: the pass's output stays valid through a
     /// reallocation (an emission volume made when a material starts to emit holds no light yet, rightly).
@@ -42,7 +43,7 @@ struct TextureDesc {
     static TextureDesc plane(GLenum format, int width, int height);
     static TextureDesc planeArray(GLenum format, int width, int height, int layers);
     static TextureDesc volume(GLenum format, int size, int levels = 1);
-    static TextureDesc volumeStack(GLenum format, int size, int tiles, int levels);
+    static TextureDesc volumeStack(GLenum format, int size, int tiles, int levels, int gapShift);
     static TextureDesc cubeArray(GLenum format, int size, int cubes);
     TextureDesc sampled(Sampling how) const;
     TextureDesc zeroedWhenMade() const;

@@ -19,8 +19,7 @@ std::vector<TextureSlot> MipmapPass::textures(const FrameContext& frame)
     const bool filters = !frame.shape.bounceVolume;
     const bool chains = frame.settings.anisotropicMips && filters;
     return { { resource::kRadianceDirectional, ResourceGroup::Voxels, &v.directional,
-                 chains ? VoxelMipBuilder::directionalDesc(v.frame.resolution, v.frame.levelCount())
-                        : gl::TextureDesc {} },
+                 chains ? VoxelMipBuilder::directionalDesc(v.frame.resolution) : gl::TextureDesc {} },
         { resource::kMipCellMarks, ResourceGroup::Voxels, &m_builder.marks(),
             filters ? VoxelMipBuilder::marksDesc(v.frame.resolution) : gl::TextureDesc {} } };
 }

@@ -74,9 +74,7 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
     return { { kBounced, ResourceGroup::Voxels, &v.bounced,
                  ifUsed(TextureDesc::volume(GL_RGBA16F, res, frame.shape.coneVolumeLevels)) },
         { kBouncedDirectional, ResourceGroup::Voxels, &v.bouncedDirectional,
-            frame.settings.anisotropicMips
-                ? ifUsed(VoxelMipBuilder::directionalDesc(res, v.frame.levelCount()))
-                : TextureDesc {} },
+            frame.settings.anisotropicMips ? ifUsed(VoxelMipBuilder::directionalDesc(res)) : TextureDesc {} },
         { kBounceCells, ResourceGroup::Voxels, &v.bounceIrradiance, ifUsed(cell) },
         { kBounceCellsBack, ResourceGroup::Voxels, &v.bounceIrradianceBack, ifUsed(cell) },
         { kBounceCellNormals, ResourceGroup::Voxels, &v.bounceCellNormal, ifUsed(cellNormal) },

@@ -1,5 +1,6 @@
 #include "scene/VoxelTextureEstimate.h"
 
+#include "scene/DirectionalStackLayout.h"
 #include "scene/RenderSettings.h"
 
 #include <algorithm>
@@ -17,18 +18,6 @@ std::uint64_t chain(std::uint64_t side, std::uint64_t bytesPerTexel, bool mips)
         if (!mips)
             break;
     }
-    return total;
-}
-
-/**
- * Bytes of the six directional chains of rgba16f over tiles of side @p side: six tiles and five gaps of half
- * a tile (shaders/common/DirectionalStack.glsl), every level down to tiles two texels wide.
- */
-std::uint64_t directionalStack(std::uint64_t side)
-{
-    std::uint64_t total = 0;
-    for (std::uint64_t s = side; s >= 2; s /= 2)
-        total += s * s * (17 * s / 2) * 8;
     return total;
 }
 
@@ -57,10 +46,11 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
     // for the volume cones trace: the bounce iteration's filter, or the first-bounce light's.
     textures.push_back({ bounced ? "cell marks, bounced levels" : "cell marks, first-bounce levels",
         chain(std::max<std::uint64_t>(n / 2, 1), 4, false) });
-    if (settings.anisotropicMips && n >= 4)
+    if (const DirectionalStackLayout stack = DirectionalStackLayout::of(settings.voxelResolution);
+        settings.anisotropicMips && stack.levels > 0)
         textures.push_back({ bounced ? "bounced, directional (+x -x +y -y +z -z)"
                                      : "radiance, directional (+x -x +y -y +z -z)",
-            directionalStack(n / 2) });
+            stack.bytes(8) });
     if (bounced) {
         textures.push_back({ "bounced", chain(n, 8, !settings.anisotropicMips) });
         // The bounce gather's cells: front and back rgba16f, the normal rgba8 snorm.

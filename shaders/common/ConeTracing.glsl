@@ -20,11 +20,12 @@ layout(binding = 5) uniform sampler3D uRadiance;
 // (docs/DESIGN.md, "Measured choices").
 #include "common/DirectionalStack.glsl"
 layout(binding = 6) uniform sampler3D uTowards;
+uniform vec2 uStack; // in tiles: from one tile's start to the next, and the stack's depth
 
 // Chain `tile` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a texture of its own has.
 vec4 sampleTowards(int tile, vec3 uvw, float l)
 {
-    uvw.z = (uvw.z + 0.5 * float(STACK_STRIDE_HALVES * tile)) * (2.0 / float(STACK_DEPTH_HALVES));
+    uvw.z = (uvw.z + uStack.x * float(tile)) / uStack.y;
     return textureLod(uTowards, uvw, l);
 }
 #endif

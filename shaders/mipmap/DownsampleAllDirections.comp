@@ -6,6 +6,7 @@
 #include "common/OccupiedCells.glsl"
 
 layout(local_size_x = 64) in;
+uniform int uTileStride; // texels from one tile's start to the next at the level written
 
 layout(binding = 0) uniform sampler3D uSource; // premultiplied radiance, a = opacity
 // The six chains' first level as tiles stacked along z: +x, -x, +y, -y, +z, -z (common/DirectionalStack.glsl).
@@ -39,7 +40,7 @@ void main()
         children[i] = texelFetch(uSource, voxel * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2), 0);
     // Spelled out, not looped: with constant arguments composite() indexes children[] statically, which
     // llvmpipe turns into registers; a loop variable made it index memory and doubled the mip pass.
-    ivec3 tile = ivec3(0, 0, STACK_STRIDE_HALVES * tileSize / 2); // the stride: a tile and the gap after it
+    ivec3 tile = ivec3(0, 0, uTileStride); // a tile and the gap after it
     imageStore(uTowards, voxel, composite(0, true));
     imageStore(uTowards, voxel + tile, composite(0, false));
     imageStore(uTowards, voxel + 2 * tile, composite(1, true));

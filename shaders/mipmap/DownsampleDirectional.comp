@@ -12,6 +12,7 @@ layout(local_size_x = 64) in;
 layout(binding = 0) uniform sampler3D uSource; // the stack itself, read one level finer than written
 layout(rgba16f, binding = 0) writeonly uniform image3D uTarget;
 uniform int uSourceLevel;
+uniform int uTileStride; // texels from one tile's start to the next at the level written
 
 
 // Texel `voxel` of chain `tile` at the level written, tiles tileSize wide.
@@ -22,7 +23,7 @@ vec4 towards(int tile, ivec3 voxel, int tileSize)
     ivec3 along = ivec3(axis == 0, axis == 1, axis == 2);
     ivec3 u = ivec3(axis == 1, axis == 2, axis == 0);
     ivec3 v = ivec3(axis == 2, axis == 0, axis == 1);
-    ivec3 base = voxel * 2 + ivec3(0, 0, STACK_STRIDE_HALVES * tile * tileSize); // the tile one level finer
+    ivec3 base = voxel * 2 + ivec3(0, 0, 2 * uTileStride * tile); // the tile one level finer
     ivec3 frontOffset = positive ? ivec3(0) : along;
     ivec3 backOffset = positive ? along : ivec3(0);
     vec4 sum = vec4(0.0);
@@ -42,6 +43,5 @@ void main()
     if (!occupiedCell(voxel))
         return;
     for (int tile = 0; tile < STACK_TILES; ++tile)
-        imageStore(uTarget, voxel + ivec3(0, 0, STACK_STRIDE_HALVES * tile * tileSize / 2),
-            towards(tile, voxel, tileSize));
+        imageStore(uTarget, voxel + ivec3(0, 0, uTileStride * tile), towards(tile, voxel, tileSize));
 }
