@@ -330,7 +330,10 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     FrameContext frame { *st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen,
         st.cones, st.staticMaterialEdits, camera, matrices.view, matrices.projection,
-        pixelToRay(camera, width, height), st.coneSampleCounter.get(), st.bounceIterationsPerFrame,
+        pixelToRay(camera, width, height), st.coneSampleCounter.get(),
+        // A staged rebuild gives the bounce solve's frames one iteration each, so that none holds the event
+        // loop for the solve's start and the screen passes together with several iterations.
+        st.pipeline->rebuilding() && st.bounceIterationsPerFrame > 0 ? 1 : st.bounceIterationsPerFrame,
         FrameShape {}, &st.pipeline->resources() };
     frame.shape = FrameShape::of(frame);
 

@@ -35,6 +35,8 @@ public:
      * complete image.
      */
     void setStagedRebuilds(bool staged) { m_staged = staged; }
+    /** Whether the last frame deferred passes: a staged rebuild is going on. */
+    bool rebuilding() const { return m_rebuilding; }
     void invalidate();
     const std::vector<std::unique_ptr<RenderPass>>& passes() const { return m_passes; }
     /** Every texture the passes make; tools outside the pipeline register theirs here too. */
