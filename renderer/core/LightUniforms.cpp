@@ -11,6 +11,37 @@
 
 namespace vct::render {
 
+namespace {
+
+float pointRadius(const PointLight& light)
+{
+    return std::isfinite(light.radius) ? std::max(light.radius, 0.0f) : 0.0f;
+}
+
+float directionalTanHalf(const DirectionalLight& light)
+{
+    const float diameter
+        = std::isfinite(light.angularDiameterDeg) ? std::clamp(light.angularDiameterDeg, 0.0f, 179.0f) : 0.0f;
+    return std::tan(glm::radians(0.5f * diameter));
+}
+
+} // namespace
+
+bool softShadowsUsed(const Scene& scene)
+{
+    const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
+    const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
+    for (int i = 0; i < points; ++i)
+        if (scene.pointLights[std::size_t(i)].castsShadows
+            && pointRadius(scene.pointLights[std::size_t(i)]) > 0.0f)
+            return true;
+    for (int i = 0; i < directionals; ++i)
+        if (scene.directionalLights[std::size_t(i)].castsShadows
+            && directionalTanHalf(scene.directionalLights[std::size_t(i)]) > 0.0f)
+            return true;
+    return false;
+}
+
 void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows)
 {
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
@@ -22,7 +53,7 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
         positions.emplace_back(light.position, light.castsShadows && shadows.pointDepth ? 1.0f : 0.0f);
         intensities.emplace_back(light.intensity, light.cosInner());
         spots.emplace_back(light.spotDirection, light.cosOuter());
-        radii.push_back(std::isfinite(light.radius) ? std::max(light.radius, 0.0f) : 0.0f);
+        radii.push_back(pointRadius(light));
     }
     for (int i = 0; i < directionals; ++i) {
         const DirectionalLight& light = scene.directionalLights[std::size_t(i)];
@@ -30,10 +61,7 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
             && std::size_t(i) < shadows.directionalMatrices.size();
         directions.emplace_back(light.direction, shadowed ? 1.0f : 0.0f);
         irradiances.emplace_back(light.irradiance, 0.0f);
-        const float diameter = std::isfinite(light.angularDiameterDeg)
-            ? std::clamp(light.angularDiameterDeg, 0.0f, 179.0f)
-            : 0.0f;
-        tanHalves.push_back(std::tan(glm::radians(0.5f * diameter)));
+        tanHalves.push_back(directionalTanHalf(light));
         if (shadowed)
             glProgramUniformMatrix4fv(program.id(),
                 program.location(("uDirectionalLightMatrix[" + std::to_string(i) + "]").c_str()), 1, GL_FALSE,

@@ -22,6 +22,11 @@ constexpr GLuint kIrradianceUnit = IRRADIANCE_UNIT;
 constexpr GLuint kCellNormalUnit = CELL_NORMAL_UNIT;
 constexpr GLuint kIrradianceBackUnit = IRRADIANCE_BACK_UNIT;
 
+/**
+ * Whether a shadow-casting light within the limits has a size (a point light's radius, a directional light's
+ * angular diameter): the shaders that include common/Lights.glsl then need the SOFT_SHADOWS variant.
+ */
+bool softShadowsUsed(const Scene& scene);
 /** Sets the uniforms and binds the shadow maps that shaders/common/Lights.glsl reads. */
 void applyLightUniforms(const gl::Program& program, const Scene& scene, const ShadowMaps& shadows);
 

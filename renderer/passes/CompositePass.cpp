@@ -39,6 +39,8 @@ std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame
         "AREA_LIGHT_COUNT " + std::to_string(areas), "VIEW " + std::to_string(int(settings.view)) };
     if (settings.direct && points + directionals + areas > 0)
         defines.emplace_back("DIRECT");
+    if (softShadowsUsed(scene))
+        defines.emplace_back("SOFT_SHADOWS");
     // The indirect targets hold this frame's light only when the cone pass ran for them.
     if (settings.indirectDiffuse && frame.shape.diffuseCones)
         defines.emplace_back("INDIRECT_DIFFUSE");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace vct::render {
 
@@ -174,10 +175,13 @@ void InjectLightPass::execute(FrameContext& frame)
     const int points = std::min<int>(int(scene.pointLights.size()), kMaxPointLights);
     const int directionals = std::min<int>(int(scene.directionalLights.size()), kMaxDirectionalLights);
     const int areas = frame.shape.areaLights;
-    const gl::Program& program = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" },
-        { "POINT_LIGHT_COUNT " + std::to_string(points),
-            "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
-            "AREA_LIGHT_COUNT " + std::to_string(areas) } });
+    std::vector<std::string> defines { "POINT_LIGHT_COUNT " + std::to_string(points),
+        "DIRECTIONAL_LIGHT_COUNT " + std::to_string(directionals),
+        "AREA_LIGHT_COUNT " + std::to_string(areas) };
+    if (softShadowsUsed(scene))
+        defines.emplace_back("SOFT_SHADOWS");
+    const gl::Program& program
+        = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" }, std::move(defines) });
     if (areas > 0)
         buildOpacity(frame);
     const VoxelRegion region = regionToInject(frame);

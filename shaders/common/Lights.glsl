@@ -34,6 +34,9 @@ layout(binding = DIRECTIONAL_DEPTH_UNIT) uniform sampler2DArray uDirectionalShad
 // uniform disk kernel over a straight edge gives the same profile as a disk light behind it. Taps on a Vogel
 // spiral (uniform over the disk), the same at every pixel: no noise, and with each tap a bilinear comparison
 // the steps between taps stay below a 24th of the light.
+// Compiled in only where some shadow-casting light has a size (SOFT_SHADOWS, renderer/core/LightUniforms.h):
+// llvmpipe runs both sides of a uniform branch, so the blocker search and filter would cost every pixel of a
+// scene whose lights are all points (the composite of the atrium 40 -> 55 ms).
 const int kSoftShadowTaps = 24;
 const float kGoldenAngle = 2.39996323;
 
@@ -135,9 +138,11 @@ float pointLightVisibility(int i, vec3 p, vec3 n)
 {
     if (uPointLightPosition[i].w < 0.5)
         return 1.0;
+#ifdef SOFT_SHADOWS
     float radius = uPointLightRadius[i];
     if (radius > 0.0)
         return pointLightSoftVisibility(i, p, n, radius);
+#endif
     return pointLightHardVisibility(i, p - uPointLightPosition[i].xyz);
 }
 
@@ -190,8 +195,10 @@ float directionalLightVisibility(int i, vec3 p, vec3 n)
     vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
     if (any(lessThan(coord.xy, vec2(0.0))) || any(greaterThan(coord.xy, vec2(1.0))))
         return 1.0;
+#ifdef SOFT_SHADOWS
     float tanHalf = uDirectionalLightTanHalf[i];
     if (tanHalf > 0.0)
         return directionalLightSoftVisibility(i, coord, p, n, tanHalf);
+#endif
     return texture(uDirectionalShadow, vec4(coord.xy, float(i), coord.z - 2e-3));
 }
