@@ -1,6 +1,7 @@
 #include "Renderer.h"
 
 #include "scene/CameraBasis.h"
+#include "scene/DirectionalStackLayout.h"
 
 #include "core/ConeSet.h"
 #include "core/FrameContext.h"
@@ -486,8 +487,8 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
             size = std::max(1, v.directional.width() >> (level - 1));
             std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
             glGetTextureSubImage(v.directional.id(), level - 1, 0, 0,
-                GLint(d) * (size + (size >> v.directional.desc().gapShift)), size, size, size, GL_RGBA,
-                GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+                GLint(d) * DirectionalStackLayout::of(v.frame.resolution).stride(level - 1), size, size, size,
+                GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
             return data;
         }
     if (channel == "emission" && !v.emission && v.albedo) {

@@ -3,6 +3,7 @@
 #include "core/ConeTraceKey.h"
 
 #include "core/FrameContext.h"
+#include "scene/DirectionalStackLayout.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -37,11 +38,11 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
 
     v.coneRadiance().bindUnit(5);
     if (anisotropic) {
-        const gl::Texture& directional = v.coneDirectional();
-        directional.bindUnit(6);
-        const gl::TextureDesc& stack = directional.desc();
-        const float gap = float(stack.width >> stack.gapShift) / float(std::max(stack.width, 1));
-        program.set("uStack", glm::vec2(1.0f + gap, float(stack.depth) + float(stack.depth - 1) * gap));
+        v.coneDirectional().bindUnit(6);
+        // The chains were made by this layout (VoxelMipBuilder::directionalDesc); in tiles for the lookup.
+        const DirectionalStackLayout stack = DirectionalStackLayout::of(v.frame.resolution);
+        const float tile = float(std::max(stack.size, 1));
+        program.set("uStack", glm::vec2(float(stack.stride(0)) / tile, float(stack.depth()) / tile));
     }
 }
 

@@ -97,12 +97,16 @@ FrameStats Pipeline::execute(FrameContext& frame)
 bool Pipeline::prepareTextures(RenderPass& pass, const FrameContext& frame)
 {
     const std::vector<TextureSlot> slots = pass.textures(frame);
-    const PassDeclaration declaration = pass.declare();
-    for (const TextureSlot& slot : slots)
-        if (std::find(declaration.writes.begin(), declaration.writes.end(), slot.name)
-            == declaration.writes.end())
+    // Names are checked against the declaration when the table first sees them: a pass lists the same slots
+    // every frame.
+    for (const TextureSlot& slot : slots) {
+        if (m_resources.find(slot.name))
+            continue;
+        const std::vector<std::string> writes = pass.declare().writes;
+        if (std::find(writes.begin(), writes.end(), slot.name) == writes.end())
             throw std::logic_error(
                 std::string("pass ") + pass.name() + " makes " + slot.name + " but does not declare it");
+    }
     return m_resources.apply(pass.name(), slots);
 }
 

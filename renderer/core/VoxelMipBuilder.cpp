@@ -103,8 +103,7 @@ void VoxelMipBuilder::buildDirectional(
             filter.set("uSourceLevel", level - 1);
         }
         // From one tile's start to the next at the level written (the source's is twice that).
-        const int side = wanted.width >> level;
-        filter.set("uTileStride", side + (side >> wanted.gapShift));
+        filter.set("uTileStride", DirectionalStackLayout::of(resolution).stride(level));
         directional.bindImage(0, level, GL_WRITE_ONLY);
         m_levelCells[std::size_t(level)].dispatchOverCells();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -36,7 +36,7 @@ layout(binding = DIRECTIONAL_DEPTH_UNIT) uniform sampler2DArray uDirectionalShad
 // the steps between taps stay below a 24th of the light.
 // Compiled in only where some shadow-casting light has a size (SOFT_SHADOWS, renderer/core/LightUniforms.h):
 // llvmpipe runs both sides of a uniform branch, so the blocker search and filter would cost every pixel of a
-// scene whose lights are all points (the composite of the atrium 40 -> 55 ms).
+// scene whose lights are all points (measured in docs/BENCHMARKS.md, "Light transport").
 const int kSoftShadowTaps = 24;
 const float kGoldenAngle = 2.39996323;
 
