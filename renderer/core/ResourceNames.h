@@ -48,6 +48,10 @@ inline constexpr const char* kAreaShadowGuide = "area-light shadow guide";
 inline constexpr const char* kAreaShadowStencil = "area-light pixel classes";
 inline constexpr const char* kFinal = "final";
 
+// Constant tables a pass uploads once.
+inline constexpr const char* kPhongLtc = "glossy lobe fits (area lights)";
+inline constexpr const char* kPhongLtcAlbedo = "glossy lobe albedo (area lights)";
+
 // A pass's own working state.
 inline constexpr const char* kBounceSums = "bounce change sums";
 

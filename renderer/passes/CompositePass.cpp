@@ -5,6 +5,9 @@
 #include "core/LightUniforms.h"
 #include "core/PixelClass.h"
 #include "core/ResourceNames.h"
+#include "scene/PhongLtcTable.h"
+
+#include "common/Bindings.glsl"
 
 #include <algorithm>
 #include <set>
@@ -17,14 +20,39 @@ PassDeclaration CompositePass::declare() const
 {
     return { { kSurface, kDepth, kIndirectDiffuse, kIndirectGuide, kSpecular, kSpecularGuide, kAreaShadow,
                  kAreaShadowGuide, kPointShadows, kDirectionalShadows },
-        { kFinal } };
+        { kFinal, kPhongLtc, kPhongLtcAlbedo } };
 }
 
 std::vector<TextureSlot> CompositePass::textures(const FrameContext& frame)
 {
     ScreenTargets& s = frame.screen;
+    // The glossy lobe's fits are read only where area lights are.
+    const bool areaLights = frame.shape.areaLights > 0;
+    const auto table = [&](GLenum format) {
+        return areaLights ? gl::TextureDesc::plane(format, PhongLtcTable::kSize, PhongLtcTable::kSize)
+                          : gl::TextureDesc {};
+    };
     return { { kFinal, ResourceGroup::Screen, &s.final,
-        gl::TextureDesc::plane(GL_RGBA32F, s.width, s.height) } };
+                 gl::TextureDesc::plane(GL_RGBA32F, s.width, s.height) },
+        { kPhongLtc, ResourceGroup::PassState, &m_phongLtc, table(GL_RGBA32F) },
+        { kPhongLtcAlbedo, ResourceGroup::PassState, &m_phongLtcAlbedo, table(GL_R32F) } };
+}
+
+void CompositePass::uploadPhongLtc()
+{
+    if (!m_phongLtc || m_phongLtcUploaded == m_phongLtc.serial())
+        return;
+    std::vector<float> fits, albedos;
+    for (const PhongLtcTable::Cell& cell : PhongLtcTable::cells()) {
+        fits.insert(fits.end(), { cell.m00, cell.m02, cell.m20, cell.m22 });
+        albedos.push_back(cell.albedo);
+    }
+    constexpr int n = PhongLtcTable::kSize;
+    glTextureSubImage2D(m_phongLtc.id(), 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, fits.data());
+    glTextureSubImage2D(m_phongLtcAlbedo.id(), 0, 0, 0, n, n, GL_RED, GL_FLOAT, albedos.data());
+    m_phongLtc.setWrap(GL_CLAMP_TO_EDGE);
+    m_phongLtcAlbedo.setWrap(GL_CLAMP_TO_EDGE);
+    m_phongLtcUploaded = m_phongLtc.serial();
 }
 
 std::vector<std::string> CompositePass::variantDefines(const FrameContext& frame, std::uint32_t pixelClass)
@@ -74,6 +102,11 @@ void CompositePass::execute(FrameContext& frame)
     s.specularGuide.bindUnit(10);
     s.areaShadow.bindUnit(2);
     s.areaShadowGuide.bindUnit(4);
+    uploadPhongLtc();
+    if (m_phongLtc) {
+        m_phongLtc.bindUnit(PHONG_LTC_UNIT);
+        m_phongLtcAlbedo.bindUnit(PHONG_LTC_ALBEDO_UNIT);
+    }
     // The g-buffer's depth and stencil come along, read only: its pixel classes pick each variant's pixels.
     s.finalTarget.follow({ &s.final }, &s.depth);
     s.finalTarget.bind();
@@ -104,6 +137,8 @@ void CompositePass::execute(FrameContext& frame)
         program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
         program.set("uAreaShadowOffset", ConeTracingSetup::coneOffsetMetres(frame));
         applyAreaLightUniforms(program, frame);
+        program.set("uPhongLtcSize", float(PhongLtcTable::kSize));
+        program.set("uPhongLtcMinWidth", float(PhongLtcTable::minWidth()));
         glStencilFunc(GL_EQUAL, GLint(pixelClass), 0xFF);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }

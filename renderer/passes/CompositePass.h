@@ -2,6 +2,7 @@
 
 #include "core/RenderPass.h"
 #include "gl/Program.h"
+#include "gl/Texture.h"
 #include "gl/VertexArray.h"
 
 #include <cstdint>
@@ -33,7 +34,13 @@ private:
      * (shaders/composite/Composite.frag). */
     static std::vector<std::string> variantDefines(const FrameContext& frame, std::uint32_t pixelClass);
 
+    /** Fills the glossy lobe's fits (scene/PhongLtcTable) into textures the pipeline made anew. */
+    void uploadPhongLtc();
+
     gl::VertexArray m_emptyVao;
+    gl::Texture m_phongLtc; ///< M^-1 per grid point (rgba32f)
+    gl::Texture m_phongLtcAlbedo; ///< the lobe's albedo per grid point (r32f)
+    std::uint64_t m_phongLtcUploaded = 0; ///< the serial of the texture last filled
 };
 
 } // namespace vct::render

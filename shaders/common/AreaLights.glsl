@@ -33,12 +33,11 @@ float edgeTerm(vec3 a, vec3 b, vec3 n)
     return s > 1e-12 ? theta * dot(c, n) / s : 0.0;
 }
 
-// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
-// receiver, above the plane with normal n; the triangle is clipped to that plane first.
-float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
+// The part of triangle (a, b, c) on the side of the plane through the origin that normal n points to, into q
+// (at most four corners); its corner count, below 3 when nothing is left.
+int clipTriangle(vec3 a, vec3 b, vec3 c, vec3 n, out vec3 q[4])
 {
     vec3 v[3] = vec3[3](a, b, c);
-    vec3 q[4];
     int count = 0;
     for (int i = 0; i < 3; ++i) {
         vec3 p0 = v[i];
@@ -50,6 +49,15 @@ float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
         if ((d0 >= 0.0) != (d1 >= 0.0) && count < 4)
             q[count++] = p0 + (p1 - p0) * (d0 / (d0 - d1));
     }
+    return count;
+}
+
+// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
+// receiver, above the plane with normal n; the triangle is clipped to that plane first.
+float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
+{
+    vec3 q[4];
+    int count = clipTriangle(a, b, c, n, q);
     if (count < 3)
         return 0.0;
     float sum = 0.0;
@@ -182,77 +190,72 @@ vec3 areaLightIrradiance(vec3 p, vec3 n, float offset)
     return shadowed;
 }
 
-// The point of triangle (a, b, c) closest to x (Ericson, Real-Time Collision Detection 5.1.5).
-vec3 closestOnTriangle(vec3 x, vec3 a, vec3 b, vec3 c)
+// The Phong lobe's linearly transformed cosines (scene/PhongLtcTable, fitted offline by vct-fit-ltc): a grid over
+// x = sqrt(1 - cos(view angle)) across and the lobe width sqrt(2 / (shininess + 2)) down, from
+// uPhongLtcMinWidth to 1, texel centres on the grid points.
+layout(binding = PHONG_LTC_UNIT) uniform sampler2D uPhongLtc;              // M^-1 (0,0), (0,2), (2,0), (2,2)
+layout(binding = PHONG_LTC_ALBEDO_UNIT) uniform sampler2D uPhongLtcAlbedo; // the lobe's albedo
+uniform float uPhongLtcSize;
+uniform float uPhongLtcMinWidth;
+
+// The fitted density's integral over triangle (a, b, c), given in the lobe's frame (normal +z): the triangle
+// clipped to the receiver's side, mapped by M^-1, clipped to the cosine's hemisphere, then Lambert's formula.
+float ltcTriangleIntegral(vec3 a, vec3 b, vec3 c, mat3 inverse)
 {
-    vec3 ab = b - a, ac = c - a, ax = x - a;
-    float d1 = dot(ab, ax), d2 = dot(ac, ax);
-    if (d1 <= 0.0 && d2 <= 0.0)
-        return a;
-    vec3 bx = x - b;
-    float d3 = dot(ab, bx), d4 = dot(ac, bx);
-    if (d3 >= 0.0 && d4 <= d3)
-        return b;
-    float vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-        return a + ab * (d1 / (d1 - d3));
-    vec3 cx = x - c;
-    float d5 = dot(ab, cx), d6 = dot(ac, cx);
-    if (d6 >= 0.0 && d5 <= d6)
-        return c;
-    float vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-        return a + ac * (d2 / (d2 - d6));
-    float va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    float denom = 1.0 / (va + vb + vc);
-    return a + ab * (vb * denom) + ac * (vc * denom);
+    vec3 q[4];
+    int count = clipTriangle(a, b, c, vec3(0.0, 0.0, 1.0), q);
+    if (count < 3)
+        return 0.0;
+    for (int i = 0; i < count; ++i)
+        q[i] = inverse * q[i];
+    vec3 r[5];
+    int kept = 0;
+    for (int i = 0; i < count; ++i) {
+        vec3 p0 = q[i];
+        vec3 p1 = q[(i + 1) % count];
+        if (p0.z >= 0.0)
+            r[kept++] = p0;
+        if ((p0.z >= 0.0) != (p1.z >= 0.0))
+            r[kept++] = p0 + (p1 - p0) * (p0.z / (p0.z - p1.z));
+    }
+    if (kept < 3)
+        return 0.0;
+    float sum = 0.0;
+    for (int i = 0; i < kept; ++i)
+        sum += edgeTerm(normalize(r[i]), normalize(r[(i + 1) % kept]), vec3(0.0, 0.0, 1.0));
+    return 0.5 * abs(sum) / kAreaPi;
 }
 
-// Radiance the normalised Phong lobe (exponent `shininess` about `mirror`, times the caller's specular colour)
-// reflects from every area light, shadowed when `shadowed`. The lobe is taken as a cap of the solid angle that holds its
-// peak's worth, 2 pi / (shininess + 2). Of it, a light covers all where the mirror ray meets one of its
-// triangles, and otherwise a share that falls off with the angle to the light's nearest point, over one lobe
-// radius (the light's edge taken as straight); never more than the solid angle the light subtends. An
-// approximation of the lobe integral (a representative point, after Karis 2013; linearly transformed cosines,
-// Heitz et al. 2016, would be exact for polygons).
-vec3 areaLightSpecular(vec3 p, vec3 n, vec3 mirror, float shininess, float offset, bool shadowed)
+// Radiance the normalised Phong lobe (exponent `shininess`, per unit specular colour) reflects toward
+// `toViewer` from every area light, unshadowed: for each light, its radiance times the lobe's albedo times the
+// fitted density's integral over its triangles, exact for the fitted lobe (Heitz et al. 2016). The fit's own
+// error against cos^n is in docs/DESIGN.md ("Area lights").
+vec3 areaLightSpecular(vec3 p, vec3 n, vec3 toViewer, float shininess)
 {
+    float cosView = clamp(dot(n, toViewer), 0.0, 1.0);
+    // The lobe's frame: the normal up, the viewer in the xz-plane on the +x side.
+    vec3 tangent = toViewer - n * cosView;
+    tangent = dot(tangent, tangent) > 1e-12 ? normalize(tangent)
+                                            : normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
+    mat3 toLobe = transpose(mat3(tangent, cross(n, tangent), n));
+    float width = sqrt(2.0 / (max(shininess, 0.0) + 2.0));
+    vec2 grid = vec2(sqrt(1.0 - cosView), clamp((width - uPhongLtcMinWidth) / (1.0 - uPhongLtcMinWidth), 0.0, 1.0));
+    vec2 uv = (grid * (uPhongLtcSize - 1.0) + 0.5) / uPhongLtcSize;
+    vec4 m = textureLod(uPhongLtc, uv, 0.0);
+    float albedo = textureLod(uPhongLtcAlbedo, uv, 0.0).r;
+    mat3 inverse = mat3(m.x, 0.0, m.z, 0.0, 1.0, 0.0, m.y, 0.0, m.w); // columns: M^-1 with (1, 1) = 1
     vec3 reflected = vec3(0.0);
-    float lobeSolidAngle = 2.0 * kAreaPi / (shininess + 2.0);
-    float lobeHalf = acos(1.0 - 1.0 / (shininess + 2.0));
-    float peak = (shininess + 2.0) / (2.0 * kAreaPi);
-    float cosine = max(dot(n, mirror), 0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
         vec4 radianceFirst = texelFetch(uAreaLights, 4 * i);
         int first = int(radianceFirst.w + 0.5);
         int count = int(texelFetch(uAreaLights, 4 * i + 2).y + 0.5);
-        float coverage = 0.0;
-        float solidAngle = 0.0;
+        float integral = 0.0;
         for (int k = 0; k < count; ++k) {
             vec3 a, b, c;
-            if (!emittingTriangle(first + 3 * k, p, a, b, c))
-                continue;
-            vec3 normal = cross(b - a, c - a);
-            float twiceArea = length(normal);
-            normal /= twiceArea;
-            vec3 middle = (a + b + c) / 3.0;
-            float distance2 = max(dot(middle, middle), 1e-30);
-            solidAngle += 0.5 * twiceArea * abs(dot(normal, middle)) / (distance2 * sqrt(distance2));
-            // Where the mirror ray meets the triangle's plane, or its nearest point to the ray if it never does.
-            float along = dot(mirror, normal);
-            float t = along < 0.0 ? dot(a, normal) / along : dot(middle, mirror);
-            vec3 onRay = mirror * max(t, 0.0);
-            vec3 nearest = closestOnTriangle(onRay, a, b, c);
-            bool hit = along < 0.0 && t > 0.0 && length(nearest - onRay) <= 1e-4 * t;
-            float apart = acos(clamp(dot(normalize(nearest), mirror), -1.0, 1.0));
-            coverage = max(coverage, hit ? 1.0 : 0.5 * (1.0 - smoothstep(0.0, 1.0, apart / lobeHalf)));
+            if (emittingTriangle(first + 3 * k, p, a, b, c))
+                integral += ltcTriangleIntegral(toLobe * a, toLobe * b, toLobe * c, inverse);
         }
-        float overlap = min(coverage * lobeSolidAngle, solidAngle);
-        if (overlap <= 0.0)
-            continue;
-        reflected += radianceFirst.rgb * peak * overlap * cosine * (shadowed ? areaLightVisibility(p + n * offset, n, offset, i) : 1.0);
+        reflected += radianceFirst.rgb * albedo * integral;
     }
     return reflected;
 }

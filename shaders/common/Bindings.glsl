@@ -14,6 +14,8 @@
 #define OPACITY_UNIT 15 // the opacity volume the area lights' shadow cones trace
 #define POINT_DEPTH_UNIT 16 // the same shadow maps as raw depth (soft shadows' blocker search)
 #define DIRECTIONAL_DEPTH_UNIT 17
+#define PHONG_LTC_UNIT 18 // the glossy lobe's fits for area lights (common/AreaLights.glsl)
+#define PHONG_LTC_ALBEDO_UNIT 19
 
 #define MAX_POINT_LIGHTS 8 // lights beyond these are ignored, and reported by the renderer
 #define MAX_DIRECTIONAL_LIGHTS 4

@@ -111,7 +111,7 @@ void main()
 #endif
         direct += brdf * irradiance;
     }
-    // Area lights: the Lambertian lobe exactly, the glossy lobe approximated (common/AreaLights.glsl). The
+    // Area lights: the Lambertian lobe exactly, the glossy lobe by its fitted cosines (common/AreaLights.glsl). The
     // shadow cone starts where the cones of indirect light do, clear of the surface's own voxels.
     if (kAreaLightCount > 0) {
         // Exact unshadowed light per pixel, times the share of it the shadow cones let through, traced on a
@@ -124,7 +124,7 @@ void main()
 #endif
         direct += albedo / kPi * areaLightUnshadowed(p, n) * areaShadow.rgb;
 #ifdef GLOSSY
-        direct += specular * areaLightSpecular(p, n, mirror, shininess, uAreaShadowOffset, false) * areaShadow.a;
+        direct += specular * areaLightSpecular(p, n, -normalize(fromCamera), shininess) * areaShadow.a;
 #endif
     }
 #endif

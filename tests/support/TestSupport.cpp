@@ -90,7 +90,7 @@ glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size)
     return { int(p.x), size - 1 - int(p.y) };
 }
 
-glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size)
+glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size, float height)
 {
     const glm::vec3 forward = glm::normalize(camera.lookAt - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
@@ -99,7 +99,7 @@ glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size)
     const float nx = 2.0f * (float(pixel.x) + 0.5f) / float(size) - 1.0f;
     const float ny = 1.0f - 2.0f * (float(pixel.y) + 0.5f) / float(size);
     const glm::vec3 dir = glm::normalize(forward + right * (nx * t) + up * (ny * t));
-    return camera.position + dir * (-camera.position.y / dir.y);
+    return camera.position + dir * ((height - camera.position.y) / dir.y);
 }
 
 double floorIrradianceFromOverheadLight(const glm::dvec3& p, double height, double radiance, bool disk)

@@ -27,8 +27,8 @@ std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
 render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 /** The pixel of a size x size RadianceImage (rows top to bottom) that camera sees world in. */
 glm::ivec2 pixelOf(const render::Camera& camera, glm::vec3 world, int size);
-/** Where the ray through the centre of @p pixel (of a size x size image) meets the plane y = 0. */
-glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size);
+/** Where the ray through the centre of @p pixel (of a size x size image) meets the plane y = @p height. */
+glm::vec3 floorPointOf(const render::Camera& camera, glm::ivec2 pixel, int size, float height = 0.0f);
 /**
  * Irradiance (W/m^2) at floor point @p p from a light of @p radiance (W/(m^2 sr)) facing straight down at
  * @p height, 1 m across and centred over the origin: the square [-0.5, 0.5]^2, or with @p disk the disk of
