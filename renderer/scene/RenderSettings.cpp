@@ -108,8 +108,8 @@ const std::map<std::string, Field>& fields()
                                                                   : std::to_string(s.bounces);
         };
         t["bounces"] = bounces;
-        t["bounce_cell"] = makeField(
-            &RenderSettings::bounceCellSize, "cell side in voxels of the bounce iteration's gather: 2 or 4");
+        t["bounce_cell"] = makeField(&RenderSettings::bounceCellSize,
+            "cell side in voxels of the bounce iteration's gather: 2, 4 or 8");
         t["bounce_tolerance"] = makeField(&RenderSettings::bounceTolerance,
             "bounces=converged stops below this relative change (0.0001..0.5)");
         t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache,
@@ -217,8 +217,8 @@ std::string RenderSettings::validate() const
     if (bounces != kConvergedBounces && (bounces < 1 || bounces > kMaxBounces))
         return "bounces must be converged or 1.." + std::to_string(kMaxBounces) + ", not "
             + std::to_string(bounces);
-    if (bounceCellSize != 2 && bounceCellSize != 4)
-        return "bounce_cell must be 2 or 4, not " + std::to_string(bounceCellSize);
+    if (bounceCellSize != 2 && bounceCellSize != 4 && bounceCellSize != 8)
+        return "bounce_cell must be 2, 4 or 8, not " + std::to_string(bounceCellSize);
     if (!(bounceTolerance >= 1e-4f && bounceTolerance <= 0.5f))
         return "bounce_tolerance must be 0.0001..0.5";
     if (diffuseConeCount < 1 || diffuseConeCount > 32)
