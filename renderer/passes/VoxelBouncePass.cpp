@@ -177,8 +177,9 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
 
     // Reinject: L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    if (!compare) // stale voxels of an earlier occupancy must not stay lit
+    if (!compare || m_staleVoxels) // stale voxels of an earlier occupancy must not stay lit
         glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    m_staleVoxels = false;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     m_reinject->use();
     m_reinject->set("uGridOrigin", v.frame.origin);
@@ -264,6 +265,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
     const bool voxelsChanged = cellsOutdated(v);
+    const bool sameBouncedTexture = v.bounced.serial() == m_bouncedSerial;
     if (voxelsChanged) {
         m_bouncedSerial = v.bounced.serial();
         m_cellsSerial = v.bounceIrradiance.serial();
@@ -273,9 +275,15 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_listedMaterials = v.materialsVersion;
         m_cellGeometryKnown = false;
     }
-    // An interactive view starts a new solve from the last one where the voxels are the same, so that a light
-    // edit brightens or dims the bounces smoothly instead of starting again from one bounce.
-    bool warm = sameSolve || (progressive && !voxelsChanged && m_iterations > 0);
+    // An interactive view starts a new solve from the last one, so that a light edit brightens or dims the
+    // bounces smoothly instead of starting again from one bounce; and so does a change of voxels in the same
+    // grid (a dragged object, an edited material), where most of the light is where it was: the iteration
+    // converges from any start, and from the last solve it needs a frame or two, where starting over showed
+    // the moving object's surroundings darker, with one or two bounces, for as long as it moved. The voxels
+    // it left are cleared before the first reinjection; until then the first gather still sees them.
+    const bool carryOver = progressive && m_iterations > 0 && (!voxelsChanged || sameBouncedTexture);
+    bool warm = sameSolve || carryOver;
+    m_staleVoxels = warm && voxelsChanged;
     if (!warm)
         startFromFirstBounce(frame);
     if (!sameSolve) {

@@ -94,6 +94,9 @@ private:
     bool m_done = false;
     bool m_extrapolated = false;
     bool m_cellGeometryKnown = false; ///< bounceCellNormal holds the listed cells' normals and sides
+    /// The bounced volume holds a solve over other voxels (a carried-over start): voxels no longer occupied
+    /// must be cleared before the next reinjection.
+    bool m_staleVoxels = false;
 };
 
 } // namespace vct::render
