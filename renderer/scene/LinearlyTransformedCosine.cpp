@@ -13,19 +13,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/** theta times the z-part of the unit normal of the plane through the origin, a and b (unit): one edge of
- * Lambert's contour integral. */
-double edgeTerm(const glm::dvec3& a, const glm::dvec3& b)
-{
-    const glm::dvec3 c = glm::cross(a, b);
-    const double s = glm::length(c);
-    return s > 1e-15 ? std::atan2(s, glm::dot(a, b)) * c.z / s : 0.0;
-}
-
 } // namespace
 
-LinearlyTransformedCosine::LinearlyTransformedCosine(const glm::dmat3& m)
-    : m_matrix(m)
+LinearlyTransformedCosine::LinearlyTransformedCosine(const glm::dmat3& m, int power)
+    : m_power(power == 3 ? 3 : 1)
+    , m_matrix(m)
     , m_inverse(glm::inverse(m))
     , m_inverseDeterminant(std::abs(glm::determinant(m_inverse)))
 {
@@ -38,15 +30,16 @@ double LinearlyTransformedCosine::density(const glm::dvec3& direction) const
     const double cosine = original.z / length;
     if (cosine <= 0.0)
         return 0.0;
-    return cosine / kPi * m_inverseDeterminant / (length * length * length);
+    const double base = (m_power + 1) / (2.0 * kPi) * std::pow(cosine, m_power);
+    return base * m_inverseDeterminant / (length * length * length);
 }
 
 glm::dvec3 LinearlyTransformedCosine::sample(double u1, double u2) const
 {
-    const double radius = std::sqrt(u1), phi = 2.0 * kPi * u2;
-    const glm::dvec3 cosine { radius * std::cos(phi), radius * std::sin(phi),
-        std::sqrt(std::max(0.0, 1.0 - u1)) };
-    return glm::normalize(m_matrix * cosine);
+    const double cosTheta = std::pow(1.0 - u1, 1.0 / (m_power + 1)), phi = 2.0 * kPi * u2;
+    const double radius = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const glm::dvec3 base { radius * std::cos(phi), radius * std::sin(phi), cosTheta };
+    return glm::normalize(m_matrix * base);
 }
 
 double LinearlyTransformedCosine::triangleIntegral(
@@ -64,7 +57,7 @@ double LinearlyTransformedCosine::polygonIntegral(std::span<const glm::dvec3> co
     const std::size_t count = clipToUpperHalf(corners, aboveHorizon);
     for (std::size_t i = 0; i < count; ++i)
         aboveHorizon[i] = m_inverse * aboveHorizon[i];
-    return clampedCosineIntegral(std::span<const glm::dvec3>(aboveHorizon.data(), count));
+    return clampedCosineIntegral(std::span<const glm::dvec3>(aboveHorizon.data(), count), m_power);
 }
 
 std::size_t LinearlyTransformedCosine::clipToUpperHalf(
@@ -87,17 +80,41 @@ double LinearlyTransformedCosine::clampedCosineIntegral(
     const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
     const std::array<glm::dvec3, 3> corners { a, b, c };
-    return clampedCosineIntegral(corners);
+    return clampedCosineIntegral(corners, 1);
 }
 
-double LinearlyTransformedCosine::clampedCosineIntegral(std::span<const glm::dvec3> corners)
+double LinearlyTransformedCosine::clampedCosineIntegral(std::span<const glm::dvec3> corners, int power)
 {
     std::array<glm::dvec3, kMaxCorners + 2> clipped;
     const std::size_t count = clipToUpperHalf(corners, clipped);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < count; ++i)
-        sum += edgeTerm(glm::normalize(clipped[i]), glm::normalize(clipped[(i + 1) % count]));
-    return std::abs(sum) / (2.0 * kPi);
+    // Over the polygon's great-circle edges: theta n_z (Lambert's contour integral, twice the cosine's
+    // integral) and n_z times the integral of z^2 along the edge, which the cube's integral needs (the
+    // surface divergence theorem on the sphere with the field z^2 times z's tangential part gives int z^3 =
+    // (2 int z - sum over edges of conormal_z int z^2 ds) / 4; Arvo 1995's axial moments).
+    double lambert = 0.0, cubic = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 a = glm::normalize(clipped[i]), b = glm::normalize(clipped[(i + 1) % count]);
+        const glm::dvec3 c = glm::cross(a, b);
+        const double s = glm::length(c);
+        if (s <= 1e-15)
+            continue;
+        const double theta = std::atan2(s, glm::dot(a, b)), nz = c.z / s;
+        lambert += theta * nz;
+        if (power == 3) {
+            // u(t) = a cos t + along sin t for t in [0, theta], `along` the unit tangent toward b.
+            const double za = a.z, zt = (b.z - glm::dot(a, b) * a.z) / s;
+            const double sin2 = std::sin(2.0 * theta);
+            const double squares = za * za * (0.5 * theta + 0.25 * sin2)
+                + zt * zt * (0.5 * theta - 0.25 * sin2) + za * zt * std::sin(theta) * std::sin(theta);
+            cubic += nz * squares;
+        }
+    }
+    const double side
+        = lambert >= 0.0 ? 1.0 : -1.0; // the conormals point out of the polygon for either winding
+    const double cosineIntegral = 0.5 * side * lambert; // of cos over the polygon
+    if (power != 3)
+        return cosineIntegral / kPi;
+    return (2.0 * cosineIntegral + side * cubic) / 4.0 / (0.5 * kPi);
 }
 
 } // namespace vct::render

@@ -91,7 +91,7 @@ FitTarget targetFor(const PhongLobe& lobe)
 
 double targetError(const FitTarget& target, const PhongLtcFitter::Parameters& parameters)
 {
-    const LinearlyTransformedCosine ltc(PhongLtcFitter::matrixOf(parameters));
+    const LinearlyTransformedCosine ltc(PhongLtcFitter::matrixOf(parameters), PhongLtcTable::kPower);
     double sum = 0.0;
     for (std::size_t r = 0; r < target.regions.size(); ++r) {
         const double difference = ltc.polygonIntegral(target.regions[r]) - target.lobeShares[r];

@@ -16,6 +16,9 @@ class PhongLtcTable {
 public:
     static constexpr int kSize = 32;
     static constexpr double kMaxShininess = 10000.0;
+    /// The fitted distribution is cos^kPower transformed (LinearlyTransformedCosine): the cube's lighter
+    /// tails fit cos^n lobes better than the cosine's.
+    static constexpr int kPower = 3;
 
     /** M^-1 in the lobe's frame with its (1, 1) element scaled to 1 (row, column), and the lobe's albedo. */
     struct Cell {

@@ -199,7 +199,9 @@ uniform float uPhongLtcSize;
 uniform float uPhongLtcMinWidth;
 
 // The fitted density's integral over triangle (a, b, c), given in the lobe's frame (normal +z): the triangle
-// clipped to the receiver's side, mapped by M^-1, clipped to the cosine's hemisphere, then Lambert's formula.
+// clipped to the receiver's side, mapped by M^-1, clipped to the base's hemisphere, then the integral of the
+// base cos^3(theta) 2 / pi (scene/PhongLtcTable::kPower) over it: from Lambert's contour sum and, per edge, the
+// integral of z^2 along it (scene/LinearlyTransformedCosine.cpp has the derivation).
 float ltcTriangleIntegral(vec3 a, vec3 b, vec3 c, mat3 inverse)
 {
     vec3 q[4];
@@ -220,10 +222,24 @@ float ltcTriangleIntegral(vec3 a, vec3 b, vec3 c, mat3 inverse)
     }
     if (kept < 3)
         return 0.0;
-    float sum = 0.0;
-    for (int i = 0; i < kept; ++i)
-        sum += edgeTerm(normalize(r[i]), normalize(r[(i + 1) % kept]), vec3(0.0, 0.0, 1.0));
-    return 0.5 * abs(sum) / kAreaPi;
+    float lambert = 0.0, cubic = 0.0;
+    for (int i = 0; i < kept; ++i) {
+        vec3 u = normalize(r[i]);
+        vec3 v = normalize(r[(i + 1) % kept]);
+        vec3 normal = cross(u, v);
+        float sine = length(normal);
+        if (sine <= 1e-9)
+            continue;
+        float cosine = dot(u, v);
+        float theta = atan(sine, cosine);
+        float nz = normal.z / sine;
+        lambert += theta * nz;
+        float zu = u.z, zt = (v.z - cosine * u.z) / sine;
+        float sin2 = 2.0 * sine * cosine;
+        cubic += nz * (zu * zu * (0.5 * theta + 0.25 * sin2) + zt * zt * (0.5 * theta - 0.25 * sin2) + zu * zt * sine * sine);
+    }
+    float side = lambert >= 0.0 ? 1.0 : -1.0;
+    return (side * lambert + side * cubic) / (2.0 * kAreaPi);
 }
 
 // Radiance the normalised Phong lobe (exponent `shininess`, per unit specular colour) reflects toward

@@ -5,6 +5,8 @@
 
 #include <QtTest>
 
+#include <array>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -22,7 +24,7 @@ LinearlyTransformedCosine tableFit(double cosView, double shininess)
     inverse[0][2] = c.m20;
     inverse[2][2] = c.m22;
     inverse[1][1] = 1.0;
-    return LinearlyTransformedCosine(glm::inverse(inverse));
+    return LinearlyTransformedCosine(glm::inverse(inverse), PhongLtcTable::kPower);
 }
 
 /** The lobe's integral over the parallelogram (corner, corner + e1, corner + e2, ...) by ray casting a
@@ -60,7 +62,8 @@ class PhongLtcTest : public QObject {
 
 private slots:
     void parametersRoundTrip();
-    void cosineLobeIsTheCosine();
+    void baseIntegralIsExact();
+    void symmetricLobeHasSymmetricFit();
     void tableHoldsTheFittersResult();
     void fitIntegratesTheLobeOverRectangles();
 };
@@ -74,13 +77,53 @@ void PhongLtcTest::parametersRoundTrip()
             qPrintable(QString("%1: %2 against %3").arg(i).arg(back[i]).arg(p[i])));
 }
 
-// Shininess 0 at normal view is the cosine itself (2 / (2 pi) cos(theta)), so its fit must be the identity.
-void PhongLtcTest::cosineLobeIsTheCosine()
+// The base distribution's integral over triangles, in and across the horizon, against brute-force quadrature
+// over the hemisphere: exact for the cosine (Lambert) and its cube (the recurrence of Arvo's axial moments).
+void PhongLtcTest::baseIntegralIsExact()
+{
+    const std::array<std::array<glm::dvec3, 3>, 3> triangles {
+        { { glm::dvec3(0.2, 0.1, 1), glm::dvec3(1, 0.3, 0.8), glm::dvec3(0.1, 1, 0.5) },
+            { glm::dvec3(-1, -1, 0.3), glm::dvec3(1, -1, 0.3), glm::dvec3(0, 1, 0.3) },
+            { glm::dvec3(-1, 0, -0.5), glm::dvec3(1, 0.2, 0.7), glm::dvec3(0, 1, 0.2) } }
+    };
+    constexpr int n = 600;
+    constexpr double pi = 3.14159265358979323846;
+    for (const auto& t : triangles) {
+        const glm::dvec3 normal = glm::cross(t[1] - t[0], t[2] - t[0]);
+        for (const int power : { 1, 3 }) {
+            double sum = 0.0;
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < 2 * n; ++j) {
+                    const double theta = (i + 0.5) / n * pi / 2, phi = (j + 0.5) / (2 * n) * 2 * pi;
+                    const glm::dvec3 d { std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                        std::cos(theta) };
+                    const double along = glm::dot(d, normal);
+                    if (std::abs(along) < 1e-14 || glm::dot(t[0], normal) / along <= 0.0)
+                        continue;
+                    const glm::dvec3 x = d * (glm::dot(t[0], normal) / along);
+                    bool inside = true;
+                    for (int k = 0; k < 3; ++k)
+                        inside
+                            = inside && glm::dot(glm::cross(t[(k + 1) % 3] - t[k], x - t[k]), normal) >= 0.0;
+                    if (inside)
+                        sum += (power + 1) / (2 * pi) * std::pow(std::cos(theta), power) * std::sin(theta)
+                            * (pi / 2 / n) * (pi / n);
+                }
+            const double closed = LinearlyTransformedCosine::clampedCosineIntegral(t, power);
+            QVERIFY2(std::abs(closed - sum) < 2e-4,
+                qPrintable(QString("cos^%1: %2 against %3").arg(power).arg(closed).arg(sum)));
+        }
+    }
+}
+
+// Shininess 0 at normal view is a lobe symmetric about the normal, so its fit has no tilt and no skew, and
+// scales both tangent axes alike (within what the fit's octagons, not round themselves, allow).
+void PhongLtcTest::symmetricLobeHasSymmetricFit()
 {
     const PhongLtcTable::Cell c
         = PhongLtcTable::cells()[std::size_t((PhongLtcTable::kSize - 1) * PhongLtcTable::kSize)];
     QCOMPARE(PhongLtcTable::shininessAt(PhongLtcTable::kSize - 1), 0.0);
-    QVERIFY(std::abs(c.m00 - 1.0f) < 1e-3f && std::abs(c.m22 - 1.0f) < 1e-3f);
+    QVERIFY2(std::abs(c.m00 - 1.0f) < 0.02f, qPrintable(QString::number(c.m00)));
     QVERIFY(std::abs(c.m02) < 1e-3f && std::abs(c.m20) < 1e-3f);
     QVERIFY(std::abs(c.albedo - 1.0f) < 1e-3f);
 }
@@ -152,7 +195,7 @@ void PhongLtcTest::fitIntegratesTheLobeOverRectangles()
                 errorSum += std::abs(fitted - exact);
                 valueSum += exact;
                 const double bound
-                    = light.coversPeak ? 0.35 * exact + 0.01 * lobe.albedo() : 0.08 * lobe.albedo();
+                    = light.coversPeak ? 0.2 * exact + 0.01 * lobe.albedo() : 0.05 * lobe.albedo();
                 if (light.coversPeak)
                     worstCovering = std::max(worstCovering, std::abs(fitted - exact) / exact);
                 else
@@ -171,7 +214,7 @@ void PhongLtcTest::fitIntegratesTheLobeOverRectangles()
     qInfo("mean absolute error %.2f%% of the mean; worst %.1f%% where a light covers the peak, %.2f%% of the "
           "albedo where an edge cuts the lobe or beside a light",
         100.0 * errorSum / valueSum, 100.0 * worstCovering, 100.0 * worstBeside);
-    QVERIFY(errorSum < 0.08 * valueSum);
+    QVERIFY(errorSum < 0.04 * valueSum);
 }
 
 QTEST_GUILESS_MAIN(PhongLtcTest)
