@@ -315,14 +315,13 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
 
     QTest::mouseClick(child<QPushButton>(&dock, "presetHigh"), Qt::LeftButton);
     const render::RenderSettings& s = document->state().settings;
-    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with finer cells for the bounce
-    // gather.
+    // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with more, narrower cones.
     QCOMPARE(s.voxelResolution, 128);
-    QCOMPARE(s.diffuseConeCount, 5);
-    QCOMPARE(s.diffuseApertureDeg, 30.0f);
+    QCOMPARE(s.diffuseConeCount, 13);
+    QCOMPARE(s.diffuseApertureDeg, 28.0f);
     QVERIFY(s.anisotropicMips);
     QCOMPARE(s.bounces, render::RenderSettings::kConvergedBounces);
-    QCOMPARE(s.bounceCellSize, 2);
+    QCOMPARE(s.bounceCellSize, 4);
     QCOMPARE(s.indirectDivisor, 4);
     QCOMPARE(document->undoStack()->count(), 1);
     QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());
