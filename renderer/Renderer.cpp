@@ -27,6 +27,10 @@
 #include <glad/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/ClipLevelPass.h"
+#include "core/ClipmapLayout.h"
+#include "scene/VoxelTextureEstimate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -44,11 +48,17 @@ struct Renderer::State {
     ScreenTargets screen;
     ConeSet cones = ConeSet::diffuse(5);
     Aabb gridBounds; ///< empty: fit the scene
+    VoxelGridFrame sceneGrid; ///< fitted around gridBounds or the scene: the dense grid, a clipmap's coarsest
     Aabb staticMaterialEdits; ///< since the last frame
     VoxelInspector inspector;
     FiniteCheck finiteCheck;
     gl::VertexArray emptyVao;
     std::unique_ptr<Pipeline> pipeline;
+    /// A clipmap's levels coarser than `voxels` (RenderSettings::voxelMode), finest first: passes of the
+    /// pipeline, which owns them. Empty for a dense grid.
+    std::vector<ClipLevelPass*> clipLevels;
+    bool timesFromPreviousFrame = false;
+    bool stagedRebuilds = false;
     VoxelMipBuilder
         boxMips; ///< the box-filtered levels when anisotropic mips skip them (ensureInspectionMips)
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
@@ -92,10 +102,23 @@ void ensureInspectionMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder
     v.inspectionMipsSerial = v.inspectionMips.serial();
 }
 
-std::unique_ptr<Pipeline> makePipeline()
+/**
+ * The frame's passes. With a clipmap of @p gridLevels levels the coarser levels come after the shadow maps,
+ * coarsest first, each able to trace on into those already done; their passes are listed in @p clipLevels,
+ * finest first.
+ */
+std::unique_ptr<Pipeline> makePipeline(int gridLevels, std::vector<ClipLevelPass*>& clipLevels)
 {
     std::vector<std::unique_ptr<RenderPass>> passes;
     passes.push_back(std::make_unique<ShadowMapPass>());
+    clipLevels.assign(std::size_t(std::max(gridLevels - 1, 0)), nullptr);
+    std::vector<const VoxelVolume*> coarser;
+    for (int level = gridLevels - 1; level >= 1; --level) {
+        auto clip = std::make_unique<ClipLevelPass>(level, coarser);
+        clipLevels[std::size_t(level - 1)] = clip.get();
+        coarser.insert(coarser.begin(), &clip->volume());
+        passes.push_back(std::move(clip));
+    }
     passes.push_back(std::make_unique<VoxelizePass>());
     passes.push_back(std::make_unique<InjectLightPass>());
     passes.push_back(std::make_unique<MipmapPass>());
@@ -181,7 +204,7 @@ Renderer::Renderer(gl::ProcAddressFunction getProcAddress, std::unique_ptr<Shade
             "the GL driver lacks GL_NV_shader_atomic_float, needed to average voxel fragments");
     gl::DebugOutput::enable();
     m_state->shaders = std::move(shaders);
-    m_state->pipeline = makePipeline();
+    m_state->pipeline = makePipeline(1, m_state->clipLevels);
     m_state->scene = std::make_unique<GpuScene>(Scene {});
 }
 
@@ -209,6 +232,12 @@ void Renderer::setSettings(const RenderSettings& settings)
     // What a setting invalidates is decided by the passes: each one's reuse key holds the settings it reads.
     if (settings.diffuseConeCount != m_state->cones.size())
         m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
+    if (settings.gridLevels() != m_settings.gridLevels() || !m_state->pipeline) {
+        // Another number of grids is another set of passes; everything is made again.
+        m_state->pipeline = makePipeline(settings.gridLevels(), m_state->clipLevels);
+        m_state->voxels = VoxelVolume {};
+        applyPipelineModes();
+    }
     m_settings = settings;
 }
 
@@ -317,14 +346,19 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     width = std::max(1, width);
     height = std::max(1, height);
     const Scene& scene = st.scene->scene();
-    const VoxelGridFrame wanted = VoxelGridFrame::fit(
-        st.gridBounds.isEmpty() ? scene.bounds() : st.gridBounds, m_settings.voxelResolution);
-    if (wanted.resolution != st.voxels.frame.resolution || wanted.origin != st.voxels.frame.origin
-        || wanted.extent != st.voxels.frame.extent) {
+    // A clipmap's coarsest level is fitted as a dense grid of its finest cells would be (the margin of one
+    // cell depends on the cell count), so its levels lie on that grid's lattice.
+    const int levels = m_settings.gridLevels();
+    VoxelGridFrame sceneGrid = VoxelGridFrame::fit(
+        st.gridBounds.isEmpty() ? scene.bounds() : st.gridBounds, m_settings.voxelResolution << (levels - 1));
+    sceneGrid.resolution = m_settings.voxelResolution;
+    if (!(sceneGrid == st.sceneGrid)) {
         // Dynamic meshes are part of the bounds: the grid follows them, so a move may refit the whole grid.
-        st.voxels.frame = wanted;
+        st.sceneGrid = sceneGrid;
         ++st.versions.staticGeometry;
     }
+    // The finest level of a clipmap follows the camera; its voxelize pass notices when it moves.
+    st.voxels.frame = ClipmapLayout::level(sceneGrid, m_settings.gridLevels(), 0, camera.position);
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor,
         m_settings.areaShadowDivisor);
 
@@ -335,7 +369,9 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         // A staged rebuild gives the bounce solve's frames one iteration each, so that none holds the event
         // loop for the solve's start and the screen passes together with several iterations.
         st.pipeline->rebuilding() && st.bounceIterationsPerFrame > 0 ? 1 : st.bounceIterationsPerFrame,
-        FrameShape {}, &st.pipeline->resources() };
+        FrameShape {}, &st.pipeline->resources(), sceneGrid, {} };
+    for (const ClipLevelPass* level : st.clipLevels)
+        frame.coarserLevels.push_back(&level->volume());
     frame.shape = FrameShape::of(frame);
 
     if (st.coneSampleCounter)
@@ -348,17 +384,24 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         && (st.voxels.inspectionMipsKey != st.voxels.coneRadianceKey()
             || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
         st.voxels.inspectionMips = gl::Texture();
-    stats.voxelBytes = st.pipeline->resources().byteSize(ResourceGroup::Voxels);
-    if (st.voxels.occupiedCountStale) {
-        // The static list names every static voxel, the dynamic one those only moving objects reach (static
-        // meshes are drawn first, and a list takes a voxel from the first fragment to reach it): together,
-        // each once. Read after the whole frame is queued, not inside the voxelize pass, so the readback does
-        // not hold back the passes after it.
-        st.voxels.occupiedCount = st.voxels.staticVoxels.count()
-            + (st.scene->hasDynamicMeshes() ? st.voxels.dynamicVoxels.count() : 0);
-        st.voxels.occupiedCountStale = false;
+    stats.voxelBytes = voxelBytes();
+    std::vector<VoxelVolume*> volumes { &st.voxels };
+    for (ClipLevelPass* level : st.clipLevels)
+        volumes.push_back(&level->volume());
+    stats.occupiedVoxels = 0;
+    for (VoxelVolume* v : volumes) {
+        if (v->occupiedCountStale) {
+            // The static list names every static voxel, the dynamic one those only moving objects reach
+            // (static meshes are drawn first, and a list takes a voxel from the first fragment to reach it):
+            // together, each once. Read after the whole frame is queued, not inside the voxelize pass, so the
+            // readback does not hold back the passes after it.
+            v->occupiedCount
+                = v->staticVoxels.count() + (st.scene->hasDynamicMeshes() ? v->dynamicVoxels.count() : 0);
+            v->occupiedCountStale = false;
+        }
+        stats.occupiedVoxels += v->occupiedCount;
     }
-    stats.occupiedVoxels = st.voxels.occupiedCount;
+    stats.gridLevels = m_settings.gridLevels();
     stats.width = width;
     stats.height = height;
     stats.voxelResolution = st.voxels.frame.resolution;
@@ -427,13 +470,25 @@ std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChann
 
 void Renderer::setTimesFromPreviousFrame(bool previousFrame)
 {
-    m_state->pipeline->setTimingReadback(
-        previousFrame ? Pipeline::TimingReadback::PreviousFrame : Pipeline::TimingReadback::ThisFrame);
+    m_state->timesFromPreviousFrame = previousFrame;
+    applyPipelineModes();
 }
 
 void Renderer::setStagedRebuilds(bool staged)
 {
-    m_state->pipeline->setStagedRebuilds(staged);
+    m_state->stagedRebuilds = staged;
+    applyPipelineModes();
+}
+
+void Renderer::applyPipelineModes()
+{
+    const Pipeline::TimingReadback readback = m_state->timesFromPreviousFrame
+        ? Pipeline::TimingReadback::PreviousFrame
+        : Pipeline::TimingReadback::ThisFrame;
+    m_state->pipeline->setTimingReadback(readback);
+    m_state->pipeline->setStagedRebuilds(m_state->stagedRebuilds);
+    for (ClipLevelPass* level : m_state->clipLevels)
+        level->pipeline().setTimingReadback(readback);
 }
 
 void Renderer::setBounceIterationsPerFrame(int iterations)
@@ -445,7 +500,15 @@ std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
     ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
         m_state->scene->hasDynamicMeshes());
-    return m_state->finiteCheck.run(*m_state->shaders, m_state->pipeline->resources());
+    std::vector<NonFiniteCount> counts
+        = m_state->finiteCheck.run(*m_state->shaders, m_state->pipeline->resources());
+    for (const ClipLevelPass* level : m_state->clipLevels)
+        for (NonFiniteCount count :
+            m_state->finiteCheck.run(*m_state->shaders, level->pipeline().resources())) {
+            count.resource = clipLevelName(level->level(), count.resource);
+            counts.push_back(std::move(count));
+        }
+    return counts;
 }
 
 int Renderer::voxelLevelCount() const
@@ -530,11 +593,20 @@ glm::vec3 Renderer::gridOrigin() const
 }
 std::size_t Renderer::voxelBytes() const
 {
-    return m_state->pipeline->resources().byteSize(ResourceGroup::Voxels);
+    std::size_t bytes = m_state->pipeline->resources().byteSize(ResourceGroup::Voxels);
+    for (const ClipLevelPass* level : m_state->clipLevels)
+        bytes += level->pipeline().resources().byteSize(ResourceGroup::Voxels);
+    return bytes;
 }
 std::vector<VoxelTextureMemory> Renderer::voxelMemory() const
 {
-    return describeVoxelMemory(m_state->pipeline->resources());
+    std::vector<VoxelTextureMemory> list = describeVoxelMemory(m_state->pipeline->resources());
+    for (const ClipLevelPass* level : m_state->clipLevels)
+        for (VoxelTextureMemory texture : describeVoxelMemory(level->pipeline().resources())) {
+            texture.name = clipLevelName(level->level(), texture.name);
+            list.push_back(std::move(texture));
+        }
+    return list;
 }
 
 void Renderer::setConeSampleCounting(bool enabled)

@@ -131,6 +131,8 @@ public:
     std::vector<std::string> takeGlErrors();
 
 private:
+    /** Hands the timing and staging modes to the pipeline and the clip levels' own. */
+    void applyPipelineModes();
     struct State;
     std::unique_ptr<State> m_state;
     RenderSettings m_settings;

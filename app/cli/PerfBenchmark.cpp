@@ -113,6 +113,7 @@ PerfResult PerfBenchmark::measure(const PerfConfig& config)
     const int w = config.width, h = config.height;
 
     PerfResult result;
+    result.gridLevels = settings.gridLevels();
     result.config = config;
     result.triangles = m_uploadedTriangles;
     result.frames = m_frames;

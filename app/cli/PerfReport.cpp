@@ -222,7 +222,8 @@ namespace {
 
 double bytesPerCell(const PerfResult& r)
 {
-    const double cells = double(r.config.grid) * double(r.config.grid) * double(r.config.grid);
+    const double cells
+        = double(r.config.grid) * double(r.config.grid) * double(r.config.grid) * double(r.gridLevels);
     return cells > 0.0 ? double(r.voxelBytes()) / cells : 0.0;
 }
 

@@ -16,7 +16,7 @@ enum PerfSweep : unsigned { kSizeSweep = 1u, kGridSweep = 2u, kTriangleSweep = 4
 /** One configuration of `vct-bench perf`. */
 struct PerfConfig {
     int width = 0, height = 0; ///< output pixels
-    int grid = 0; ///< voxel grid cells per side
+    int grid = 0; ///< voxel grid cells per side (per level of a clipmap)
     int triangleFactor = 1; ///< every triangle of the scene split into this many
     unsigned sweeps = 0; ///< PerfSweep bits
 };
@@ -45,6 +45,7 @@ struct ModeTiming {
 /** Everything measured for one configuration. */
 struct PerfResult {
     PerfConfig config;
+    int gridLevels = 1; ///< grids the voxels take: a clipmap's levels, else 1
     std::size_t triangles = 0;
     int frames = 0; ///< timed frames per mode
     ModeTiming full; ///< every pass re-run (Renderer::invalidate() before each frame)

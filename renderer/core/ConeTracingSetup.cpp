@@ -5,10 +5,13 @@
 #include "core/FrameContext.h"
 #include "scene/DirectionalStackLayout.h"
 
+#include "common/Bindings.glsl"
+
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace vct::render {
@@ -18,8 +21,9 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     const RenderSettings& settings = frame.settings;
     const VoxelVolume& v = frame.voxels;
     const float voxel = v.frame.voxelSize();
+    // Negative: the diagonal of the grid around the scene (a clipmap's coarsest level, not its finest).
     const float maxDistance
-        = settings.maxDistance >= 0.0f ? settings.maxDistance : v.frame.extent * std::sqrt(3.0f);
+        = settings.maxDistance >= 0.0f ? settings.maxDistance : frame.sceneGrid.extent * std::sqrt(3.0f);
     std::vector<glm::vec4> cones;
     for (int i = 0; i < frame.diffuseCones.size(); ++i)
         cones.emplace_back(
@@ -44,12 +48,35 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
         const float tile = float(std::max(stack.size, 1));
         program.set("uStack", glm::vec2(float(stack.stride(0)) / tile, float(stack.depth()) / tile));
     }
+    if (frame.coarserLevels.empty())
+        return;
+    std::vector<glm::vec4> boxes, grids;
+    for (std::size_t k = 0; k < frame.coarserLevels.size(); ++k) {
+        const VoxelVolume& level = *frame.coarserLevels[k];
+        boxes.emplace_back(level.frame.origin, level.frame.extent);
+        grids.emplace_back(level.frame.voxelSize(), float(level.frame.levelCount() - 1),
+            frame.settings.coneOffsetVoxels
+                * std::max(level.frame.voxelSize(), frame.sceneGrid.extent / float(kOffsetGrid)),
+            0.0f);
+        level.coneRadiance().bindUnit(GLuint(CLIP_RADIANCE_UNIT + int(k)));
+        if (anisotropic)
+            level.coneDirectional().bindUnit(GLuint(CLIP_TOWARDS_UNIT + int(k)));
+    }
+    program.set("uClipBox", boxes);
+    program.set("uClipGrid", grids);
+}
+
+void ConeTracingSetup::addDefines(std::vector<std::string>& defines, const FrameContext& frame)
+{
+    if (!frame.coarserLevels.empty())
+        defines.push_back("CLIP_LEVELS " + std::to_string(frame.coarserLevels.size()));
 }
 
 float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame)
 {
-    const VoxelGridFrame& grid = frame.voxels.frame;
-    return frame.settings.coneOffsetVoxels * std::max(grid.voxelSize(), grid.extent / float(kOffsetGrid));
+    // On a clipmap's fine levels too: their voxels are those of a finer grid around the scene.
+    return frame.settings.coneOffsetVoxels
+        * std::max(frame.voxels.frame.voxelSize(), frame.sceneGrid.extent / float(kOffsetGrid));
 }
 
 ConeTraceKey ConeTraceKey::of(const FrameContext& frame)
@@ -69,7 +96,7 @@ void ConeTracingSetup::applyCellGather(const gl::Program& program, const FrameCo
     program.set("uCellSize", cellSize);
     program.set("uOne", 1);
     program.set("uAoEnabled", ao ? 1 : 0);
-    program.set("uAoDistance", 0.1f * v.frame.extent);
+    program.set("uAoDistance", 0.1f * frame.sceneGrid.extent);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     front.bindImage(0, 0, GL_WRITE_ONLY);

@@ -3,6 +3,9 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
+#include <string>
+#include <vector>
+
 namespace vct::render {
 
 struct FrameContext;
@@ -15,6 +18,8 @@ struct FrameContext;
 class ConeTracingSetup {
 public:
     static void apply(const gl::Program& program, const FrameContext& frame, bool anisotropic);
+    /** The shader defines apply() needs: CLIP_LEVELS for a clipmap's coarser levels (core/ClipLevelPass). */
+    static void addDefines(std::vector<std::string>& defines, const FrameContext& frame);
     /**
      * How far along the normal cones (and the area lights' shadow cones) start, metres: cone_offset voxels,
      * and on a grid finer than kOffsetGrid^3 as far as on that one. On finer grids a start a fixed number of

@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <vector>
 
 namespace vct::render {
 
@@ -64,6 +65,12 @@ struct FrameContext {
     /// Every texture made so far, by name (core/ResourceNames.h): how a pass reads what another keeps as its
     /// own member rather than in VoxelVolume or ScreenTargets.
     const ResourceTable* resources = nullptr;
+    /// The grid fitted around the scene: `voxels.frame` for a dense grid, the coarsest level of a clipmap
+    /// (core/ClipmapLayout), from which each level follows the camera.
+    VoxelGridFrame sceneGrid;
+    /// A clipmap's levels coarser than `voxels`, finest first (core/ClipLevelPass): where cones that leave
+    /// `voxels` go on tracing. Empty for a dense grid.
+    std::vector<const VoxelVolume*> coarserLevels;
 };
 
 } // namespace vct::render

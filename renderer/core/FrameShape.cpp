@@ -15,7 +15,9 @@ FrameShape FrameShape::of(const FrameContext& frame)
     shape.ambientOcclusion = FrameRules::ambientOcclusionNeeded(frame);
     shape.diffuseCones = FrameRules::diffuseConesNeeded(frame);
     shape.specularCones = FrameRules::specularConesNeeded(frame);
-    shape.irradianceCache = frame.settings.irradianceCache && shape.diffuseCones;
+    // The cache's cells belong to one grid; a clipmap's pixels trace their own cones across its levels.
+    shape.irradianceCache = frame.settings.irradianceCache && shape.diffuseCones
+        && frame.coarserLevels.empty() && frame.settings.gridLevels() == 1;
     shape.bounceVolume = FrameRules::bounceVolumeUsed(frame);
     shape.coneVolumeLevels = FrameRules::coneVolumeLevels(frame);
     shape.radianceLevels = FrameRules::radianceLevels(frame);

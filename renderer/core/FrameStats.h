@@ -17,10 +17,11 @@ struct PassStats {
 
 /** Per-frame figures for --stats, the benchmarks and the editor's stats panel. */
 struct FrameStats {
-    /** Voxel memory over the grid's cells (resolution^3), and over the cells holding a surface. */
+    /** Voxel memory over the grids' cells (resolution^3 each), and over the cells holding a surface. */
     double voxelBytesPerCell() const
     {
-        const double cells = double(voxelResolution) * double(voxelResolution) * double(voxelResolution);
+        const double cells = double(voxelResolution) * double(voxelResolution) * double(voxelResolution)
+            * double(gridLevels);
         return cells > 0.0 ? double(voxelBytes) / cells : 0.0;
     }
     double voxelBytesPerOccupiedVoxel() const
@@ -31,9 +32,10 @@ struct FrameStats {
     std::vector<PassStats> passes;
     double totalGpuMs = 0.0;
     std::size_t voxelBytes = 0;
-    std::size_t occupiedVoxels = 0; ///< voxels holding a surface
+    std::size_t occupiedVoxels = 0; ///< voxels holding a surface, in every level of a clipmap
     int width = 0, height = 0;
     int voxelResolution = 0;
+    int gridLevels = 1; ///< a clipmap's levels (RenderSettings::voxelMode), else 1
     float voxelSize = 0.0f; ///< metres
     /// The GPU times are those of the previous frame's passes (Pipeline::TimingReadback::PreviousFrame):
     /// reading this frame's would stall the CPU until the frame is done.

@@ -94,7 +94,9 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
 
 void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame)
 {
-    const VoxelVolume& v = frame.voxels;
+    // A clipmap's shadow cones trace its coarsest level, which holds the whole scene: the finer levels end
+    // a few metres out, and an occluder beyond them would cast nothing.
+    const VoxelVolume& v = frame.coarserLevels.empty() ? frame.voxels : *frame.coarserLevels.back();
     program.set("uOpacityOrigin", v.frame.origin);
     program.set("uOpacityExtent", v.frame.extent);
     program.set("uOpacityVoxel", v.frame.voxelSize());

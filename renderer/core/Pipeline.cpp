@@ -5,10 +5,10 @@
 
 namespace vct::render {
 
-Pipeline::Pipeline(std::vector<std::unique_ptr<RenderPass>> passes)
+Pipeline::Pipeline(std::vector<std::unique_ptr<RenderPass>> passes, std::vector<std::string> given)
     : m_passes(std::move(passes))
 {
-    std::vector<std::string> written;
+    std::vector<std::string> written = std::move(given);
     for (const auto& pass : m_passes) {
         const PassDeclaration declaration = pass->declare();
         for (const std::string& r : declaration.reads)
@@ -34,6 +34,7 @@ FrameStats Pipeline::execute(FrameContext& frame)
     std::vector<bool> ran(m_passes.size(), false);
     std::vector<gl::TimerQuery>& timers = m_timers[m_currentSet];
     bool wholeGridRedone = false, endAfter = false;
+    std::vector<PassStats> nestedStats;
     for (std::size_t i = 0; i < m_passes.size(); ++i) {
         RenderPass& pass = *m_passes[i];
         if (stats.deferred) {
@@ -61,10 +62,18 @@ FrameStats Pipeline::execute(FrameContext& frame)
         }
         PassStats entry { pass.name(), "run", decision.reason, 0.0 };
         if (decision.action == PassDecision::Action::Run) {
-            timers[i].begin();
+            if (pass.timedByPipeline())
+                timers[i].begin();
             pass.execute(frame);
-            timers[i].end();
-            ran[i] = true;
+            if (pass.timedByPipeline()) {
+                timers[i].end();
+                ran[i] = true;
+            } else {
+                entry.gpuMs = pass.gpuMsOfLastRun();
+                stats.totalGpuMs += entry.gpuMs;
+                for (const PassStats& nested : pass.nestedStats())
+                    nestedStats.push_back(nested);
+            }
         } else if (decision.action == PassDecision::Action::Reuse) {
             entry.action = "reused";
         } else {
@@ -87,6 +96,8 @@ FrameStats Pipeline::execute(FrameContext& frame)
             stats.totalGpuMs += stats.passes[i].gpuMs;
         }
     stats.timesFromPreviousFrame = previous;
+    // After the timings, which are indexed by pass.
+    stats.passes.insert(stats.passes.end(), nestedStats.begin(), nestedStats.end());
     if (previous) {
         m_ranLastFrame = ran;
         m_currentSet = 1 - m_currentSet;

@@ -6,6 +6,7 @@
 #include "gl/TimerQuery.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vct::render {
@@ -19,8 +20,11 @@ public:
         PreviousFrame, ///< execute() reports the frame before, whose results are in: no stall (the editor)
     };
 
-    /** Throws std::logic_error when a pass reads a resource no earlier pass writes. */
-    explicit Pipeline(std::vector<std::unique_ptr<RenderPass>> passes);
+    /**
+     * Throws std::logic_error when a pass reads a resource no earlier pass writes, nor @p given (written
+     * before this pipeline runs: a clip level's reads the frame's shadow maps).
+     */
+    explicit Pipeline(std::vector<std::unique_ptr<RenderPass>> passes, std::vector<std::string> given = {});
 
     /** Runs one frame and returns its decisions, with GPU times as setTimingReadback() says. */
     FrameStats execute(FrameContext& frame);

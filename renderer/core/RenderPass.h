@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/FrameStats.h"
 #include "core/ResourceTable.h"
 
 #include <string>
@@ -66,6 +67,13 @@ public:
     virtual void release(FrameContext& frame) { (void)frame; }
     /** Forgets cached state so the next plan() runs the pass (after GPU resources were recreated). */
     virtual void invalidate() = 0;
+    /**
+     * False for a pass that runs passes of its own (core/ClipLevelPass), which time themselves: GL timer
+     * queries do not nest. The pipeline then reports gpuMsOfLastRun() and appends nestedStats().
+     */
+    virtual bool timedByPipeline() const { return true; }
+    virtual double gpuMsOfLastRun() const { return 0.0; }
+    virtual std::vector<PassStats> nestedStats() const { return {}; }
 };
 
 } // namespace vct::render

@@ -16,6 +16,8 @@ struct VoxelGridFrame {
     float extent = 1.0f; ///< Side of the cube, metres.
     int resolution = 1;
 
+    bool operator==(const VoxelGridFrame&) const = default;
+
     float voxelSize() const { return extent / float(resolution); }
     int levelCount() const;
     /** World position to grid coordinates in [0, resolution]. */

@@ -62,9 +62,10 @@ PassDecision ConeTracePass::plan(const FrameContext& frame) const
 namespace {
 
 const gl::Program& variant(
-    const ShaderLibrary& shaders, const char* name, const char* file, bool anisotropic, bool counting)
+    const FrameContext& frame, const char* name, const char* file, bool anisotropic, bool counting)
 {
     std::vector<std::string> defines;
+    ConeTracingSetup::addDefines(defines, frame);
     std::string label = name;
     if (anisotropic) {
         defines.emplace_back("ANISOTROPIC");
@@ -74,7 +75,7 @@ const gl::Program& variant(
         defines.emplace_back("COUNT_SAMPLES");
         label += ", counting samples";
     }
-    return shaders.program({ label, { "common/FullScreen.vert", file }, defines });
+    return frame.shaders.program({ label, { "common/FullScreen.vert", file }, defines });
 }
 
 } // namespace
@@ -145,11 +146,11 @@ void ConeTracePass::execute(FrameContext& frame)
     s.indirectTarget.drawTo({ 0, 1 });
     classifyGrid(classify, s.indirectDivisor);
     if (diffuse) {
-        const gl::Program& cones = variant(
-            frame.shaders, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
+        const gl::Program& cones
+            = variant(frame, "cone trace: diffuse cones", "cone/DiffuseCones.frag", anisotropic, counting);
         s.indirectTarget.drawTo({ 0 });
         cones.set("uAoEnabled", frame.shape.ambientOcclusion ? 1 : 0);
-        cones.set("uAoDistance", 0.1f * frame.voxels.frame.extent);
+        cones.set("uAoDistance", 0.1f * frame.sceneGrid.extent);
         traceClass(cones, s.indirectDivisor, PIXEL_NEEDS_CONES);
     }
     s.indirectTarget.drawTo({ 0, 1 });
@@ -159,8 +160,8 @@ void ConeTracePass::execute(FrameContext& frame)
         const gl::Program& classifySpecular
             = frame.shaders.program({ "cone trace: classify pixels, specular grid",
                 { "common/FullScreen.vert", "cone/ClassifyPixels.frag" }, { "SPECULAR_GRID" } });
-        const gl::Program& cone = variant(
-            frame.shaders, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
+        const gl::Program& cone
+            = variant(frame, "cone trace: specular cone", "cone/SpecularCone.frag", anisotropic, counting);
         s.specularTarget.follow({ &s.specular, &s.specularGuide }, &s.specularStencil);
         s.specularTarget.bind();
         glViewport(0, 0, s.specular.width(), s.specular.height());

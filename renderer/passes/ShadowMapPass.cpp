@@ -155,11 +155,12 @@ void ShadowMapPass::execute(FrameContext& frame)
     if (!shadows.framebuffer)
         shadows.framebuffer = gl::Framebuffer::create();
 
-    // Depth ranges come from the voxel grid, which only changes with a static rebuild: the static layer's
-    // distances stay valid while a dynamic object moves.
+    // Depth ranges come from the grid around the scene (a clipmap's coarsest level, not the finest, which
+    // follows the camera), which only changes with a static rebuild: the static layer's distances stay valid
+    // while a dynamic object moves.
     Aabb bounds;
-    bounds.extend(frame.voxels.frame.origin);
-    bounds.extend(frame.voxels.frame.origin + glm::vec3(frame.voxels.frame.extent));
+    bounds.extend(frame.sceneGrid.origin);
+    bounds.extend(frame.sceneGrid.origin + glm::vec3(frame.sceneGrid.extent));
     // The floors only keep a degenerate (empty or point-sized) grid from giving a zero depth range; they are
     // far below any scene size, so tiny scenes keep their proportions (tests/hardcases, scale invariance).
     const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-20f);

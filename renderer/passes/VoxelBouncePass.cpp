@@ -144,6 +144,7 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
         defines.emplace_back("CHANGE_SUMS");
         name += ", change sums";
     }
+    ConeTracingSetup::addDefines(defines, frame);
     const gl::Program& gather = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
     ConeTracingSetup::applyCellGather(gather, frame, anisotropic, cellSize, false, v.bounceIrradiance,
         v.bounceIrradianceBack, v.bounceCellNormal);
@@ -281,7 +282,10 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // converges from any start, and from the last solve it needs a frame or two, where starting over showed
     // the moving object's surroundings darker, with one or two bounces, for as long as it moved. The voxels
     // it left are cleared before the first reinjection; until then the first gather still sees them.
-    const bool carryOver = progressive && m_iterations > 0 && (!voxelsChanged || sameBouncedTexture);
+    // Not across a moved grid (a clip level following the camera): the last solve's light sits elsewhere in
+    // it.
+    const bool carryOver
+        = progressive && m_iterations > 0 && (!voxelsChanged || (sameBouncedTexture && m_grid == v.frame));
     bool warm = sameSolve || carryOver;
     m_staleVoxels = warm && voxelsChanged;
     if (!warm)
@@ -325,6 +329,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     }
     v.bounceProgress = { m_iterations, m_residual, m_done, m_extrapolated };
     m_radianceVersion = v.radianceVersion;
+    m_grid = v.frame;
     m_key = keyOf(frame);
     ++v.bouncedVersion;
 }

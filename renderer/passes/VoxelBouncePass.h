@@ -97,6 +97,7 @@ private:
     /// The bounced volume holds a solve over other voxels (a carried-over start): voxels no longer occupied
     /// must be cleared before the next reinjection.
     bool m_staleVoxels = false;
+    VoxelGridFrame m_grid; ///< where the grid was for the last solve
 };
 
 } // namespace vct::render

@@ -25,8 +25,9 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame) const
     const VoxelVolume& v = frame.voxels;
     if (!frame.shape.irradianceCache)
         return { PassDecision::Action::Skip,
-            frame.settings.irradianceCache ? "no diffuse light needed"
-                                           : "irradiance cache off: cones per pixel" };
+            !frame.settings.irradianceCache       ? "irradiance cache off: cones per pixel"
+                : frame.settings.gridLevels() > 1 ? "a clipmap: cones per pixel across its levels"
+                                                  : "no diffuse light needed" };
     const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion
         && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key;
     if (!lightKept)
@@ -149,10 +150,13 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips && v.coneDirectional();
+    std::vector<std::string> defines;
+    if (anisotropic)
+        defines.emplace_back("ANISOTROPIC");
+    ConeTracingSetup::addDefines(defines, frame);
     const gl::Program& program
         = frame.shaders.program({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
-            { "irradiance/GatherCells.comp" },
-            anisotropic ? std::vector<std::string> { "ANISOTROPIC" } : std::vector<std::string> {} });
+            { "irradiance/GatherCells.comp" }, defines });
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;

@@ -19,6 +19,8 @@ PassDecision VoxelizePass::plan(const FrameContext& frame) const
         return { PassDecision::Action::Run, "no valid output yet" };
     if (m_staticGeometry != frame.versions.staticGeometry)
         return { PassDecision::Action::Run, "static geometry or grid changed" };
+    if (!(m_grid == frame.voxels.frame))
+        return { PassDecision::Action::Run, "the grid moved with the camera" };
     if (m_conservative != frame.settings.conservativeVoxelization)
         return { PassDecision::Action::Run, "voxelization mode changed" };
     if (m_staticMaterials != frame.versions.staticMaterials)
@@ -57,7 +59,7 @@ bool VoxelizePass::redoesWholeGrid(const FrameContext& frame) const
 {
     // As execute() decides: a static change or a new mode rebuilds everything, anything else a region.
     return m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization;
+        || m_conservative != frame.settings.conservativeVoxelization || !(m_grid == frame.voxels.frame);
 }
 
 void VoxelizePass::ensureResources(FrameContext& frame)
@@ -160,7 +162,7 @@ void VoxelizePass::execute(FrameContext& frame)
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
     const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization;
+        || m_conservative != frame.settings.conservativeVoxelization || !(m_grid == v.frame);
     const bool dynamicMoved = hasDynamic && m_dynamicVersion != frame.versions.dynamicVoxels();
     // What to redo: the whole grid after a static change; else around the static meshes whose material
     // changed, and around the moving objects, now and before a move. The region is cleared and everything in
@@ -194,6 +196,7 @@ void VoxelizePass::execute(FrameContext& frame)
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
     m_conservative = frame.settings.conservativeVoxelization;
+    m_grid = v.frame;
     v.occupiedCountStale = v.occupiedCountStale || !region.isEmpty();
     v.changedRegion = region;
     v.onlyDynamicChanged = !staticChanged;

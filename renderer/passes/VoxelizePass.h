@@ -3,6 +3,7 @@
 #include "core/GpuScene.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
+#include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
@@ -48,6 +49,8 @@ private:
     std::uint64_t m_dynamicVersion = 0;
     std::uint64_t m_albedoSerial = 0; ///< the albedo texture m_framebuffer was made for
     bool m_conservative = false; ///< the voxelization mode of the last full rebuild
+    /// Where the grid was: a clip level follows the camera (core/ClipmapLayout) and is redone when it moves.
+    VoxelGridFrame m_grid;
 };
 
 } // namespace vct::render

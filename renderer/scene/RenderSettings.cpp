@@ -159,6 +159,22 @@ const std::map<std::string, Field>& fields()
         };
         view.print = [](const RenderSettings& s) { return std::string(debugViewName(s.view)); };
         t["view"] = view;
+        Field mode;
+        mode.meaning
+            = "dense (one grid around the scene) or clipmap (clip_levels nested grids, the finer ones "
+              "centred on the camera)";
+        mode.parse = [](RenderSettings& s, const std::string& v) {
+            if (v != "dense" && v != "clipmap")
+                return false;
+            s.voxelMode = v == "dense" ? VoxelMode::Dense : VoxelMode::Clipmap;
+            return true;
+        };
+        mode.print = [](const RenderSettings& s) {
+            return std::string(s.voxelMode == VoxelMode::Dense ? "dense" : "clipmap");
+        };
+        t["voxel_mode"] = mode;
+        t["clip_levels"] = makeField(&RenderSettings::clipLevels,
+            "levels of voxel_mode=clipmap, each voxel_res^3 and half as wide as the one around it (2..6)");
         return t;
     }();
     return table;
@@ -212,6 +228,8 @@ std::string RenderSettings::validate() const
     const bool powerOfTwo = voxelResolution > 0 && (voxelResolution & (voxelResolution - 1)) == 0;
     if (!powerOfTwo || voxelResolution < 8 || voxelResolution > 512)
         return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
+    if (clipLevels < 2 || clipLevels > 6)
+        return "clip_levels must be 2..6, not " + std::to_string(clipLevels);
     if (irradianceCellSize != 1 && irradianceCellSize != 2 && irradianceCellSize != 4)
         return "irradiance_cell must be 1, 2 or 4, not " + std::to_string(irradianceCellSize);
     if (bounces != kConvergedBounces && (bounces < 1 || bounces > kMaxBounces))
@@ -246,9 +264,11 @@ std::string RenderSettings::validate() const
     if (const std::uint64_t bytes = voxelMemoryBytes(); bytes > std::uint64_t(voxelBudgetMiB) << 20) {
         char text[256];
         std::snprintf(text, sizeof text,
-            "voxel_res=%d%s needs %.1f GiB of voxel textures, more than voxel_budget_mb=%d allows; "
+            "voxel_res=%d%s%s needs %.1f GiB of voxel textures, more than voxel_budget_mb=%d allows; "
             "lower voxel_res or raise voxel_budget_mb if the GL has the memory",
             voxelResolution, anisotropicMips ? " with anisotropic mips" : "",
+            voxelMode == VoxelMode::Clipmap ? (" in " + std::to_string(clipLevels) + " clip levels").c_str()
+                                            : "",
             double(bytes) / double(1u << 30), voxelBudgetMiB);
         return text;
     }

@@ -20,12 +20,25 @@ enum class DebugView {
     Emission
 };
 
+/** How the voxels cover the scene. */
+enum class VoxelMode {
+    Dense, ///< one grid of voxelResolution^3 fitted around the scene
+    /// clipLevels nested grids of voxelResolution^3 each, the coarsest fitted around the scene, each finer
+    /// one half as wide and centred on the camera (core/ClipmapLayout): voxelResolution * 2^(clipLevels - 1)
+    /// cells per side near the camera for clipLevels times one grid's memory.
+    Clipmap,
+};
+
 /**
  * Every accuracy and feature setting of a frame. Angles in degrees, distances in metres unless noted.
  * set() parses the `key=value` form used by `vct-render --set` and the project files.
  */
 struct RenderSettings {
-    int voxelResolution = 128; ///< Grid cells per side, power of two, 8..512.
+    int voxelResolution = 128; ///< Grid cells per side, power of two, 8..512 (per level of a clipmap).
+    VoxelMode voxelMode = VoxelMode::Dense;
+    int clipLevels = 3; ///< Levels of a clipmap (2..6); a dense grid is one.
+    /** How many grids the voxels take: clipLevels for a clipmap, else 1. */
+    int gridLevels() const { return voxelMode == VoxelMode::Clipmap ? clipLevels : 1; }
     bool conservativeVoxelization = true;
     /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
     /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample. On by

@@ -7,6 +7,11 @@
 
 namespace vct::render {
 
+std::string clipLevelName(int level, const std::string& name)
+{
+    return level == 0 ? name : "clip level " + std::to_string(level) + ": " + name;
+}
+
 namespace {
 
 /** Bytes of a cube of @p side texels of @p bytesPerTexel, with its whole mip chain when @p mips. */
@@ -59,7 +64,8 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
     }
-    if (settings.irradianceCache) {
+    // A clipmap traces every pixel's cones itself: the cache's cells belong to one grid.
+    if (settings.irradianceCache && settings.gridLevels() == 1) {
         // The irradiance cache's cells, and which of them were gathered (r32ui).
         const std::uint64_t cells
             = std::max<std::uint64_t>(n / std::uint64_t(settings.irradianceCellSize), 1);
@@ -68,6 +74,12 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "irradiance cell normals", chain(cells, 4, false) });
         textures.push_back({ "irradiance cells gathered", chain(cells, 4, false) });
     }
+    // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory
+    // names them.
+    const std::size_t oneLevel = textures.size();
+    for (int level = 1; level < settings.gridLevels(); ++level)
+        for (std::size_t i = 0; i < oneLevel; ++i)
+            textures.push_back({ clipLevelName(level, textures[i].name), textures[i].bytes });
     return textures;
 }
 

@@ -10,6 +10,9 @@ namespace vct::render {
 
 struct RenderSettings;
 
+/** How a texture of clip level @p level (0: the finest, or the dense grid) is named in memory tables. */
+std::string clipLevelName(int level, const std::string& name);
+
 /**
  * What the passes will allocate for the voxel grid under some settings, texture by texture, before anything
  * is allocated: the budget check (RenderSettings::validate, which refuses a grid over voxel_budget_mb) and

@@ -16,6 +16,9 @@
 #define DIRECTIONAL_DEPTH_UNIT 17
 #define PHONG_LTC_UNIT 18 // the glossy lobe's fits for area lights (common/AreaLights.glsl)
 #define PHONG_LTC_ALBEDO_UNIT 19
+#define CLIP_RADIANCE_UNIT 20 // a clipmap's coarser levels (common/ConeTracing.glsl), up to MAX_CLIP_LEVELS - 1 each
+#define CLIP_TOWARDS_UNIT 26
+#define MAX_CLIP_LEVELS 6
 
 #define MAX_POINT_LIGHTS 8 // lights beyond these are ignored, and reported by the renderer
 #define MAX_DIRECTIONAL_LIGHTS 4

@@ -30,6 +30,18 @@ vec4 sampleTowards(int tile, vec3 uvw, float l)
 }
 #endif
 
+#ifdef CLIP_LEVELS
+// A clipmap's levels coarser than the grid above (core/ClipLevelPass), finest first, each a grid of the same
+// resolution twice as wide: a cone whose footprint would reach past a grid's edge goes on in the next level.
+#include "common/Bindings.glsl"
+layout(binding = CLIP_RADIANCE_UNIT) uniform sampler3D uClipRadiance[CLIP_LEVELS];
+#ifdef ANISOTROPIC
+layout(binding = CLIP_TOWARDS_UNIT) uniform sampler3D uClipTowards[CLIP_LEVELS];
+#endif
+uniform vec4 uClipBox[CLIP_LEVELS];  // xyz: the level's corner, w: its side (metres)
+uniform vec4 uClipGrid[CLIP_LEVELS]; // x: its voxel (metres), y: its top mip level
+#endif
+
 uniform vec3 uGridOrigin;
 uniform float uGridExtent;
 uniform float uVoxelSize;
@@ -63,33 +75,145 @@ vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
 #endif
 }
 
+#ifdef CLIP_LEVELS
+// Clip level k as a cone travelling along dir sees it, as sampleVolume() the grid's own volume.
+vec4 sampleClip(int k, vec3 uvw, float level, vec3 dir)
+{
+#ifndef ANISOTROPIC
+    COUNT_FETCHES(1);
+    return textureLod(uClipRadiance[k], uvw, level);
+#else
+    COUNT_FETCHES(4);
+    vec4 finest = textureLod(uClipRadiance[k], uvw, 0.0);
+    vec3 w = dir * dir;
+    float l = max(level - 1.0, 0.0);
+    vec3 z = (vec3(uvw.z) + uStack.x * vec3(dir.x > 0.0 ? 0.0 : 1.0, dir.y > 0.0 ? 2.0 : 3.0, dir.z > 0.0 ? 4.0 : 5.0)) / uStack.y;
+    vec4 directional = w.x * textureLod(uClipTowards[k], vec3(uvw.xy, z.x), l)
+        + w.y * textureLod(uClipTowards[k], vec3(uvw.xy, z.y), l)
+        + w.z * textureLod(uClipTowards[k], vec3(uvw.xy, z.z), l);
+    return mix(finest, directional, clamp(level, 0.0, 1.0));
+#endif
+}
+
+// Whether uvw (in a grid's [0, 1]^3) is further than margin from the grid's faces.
+bool insideGrid(vec3 uvw, float margin)
+{
+    return all(greaterThanEqual(uvw, vec3(margin))) && all(lessThanEqual(uvw, vec3(1.0 - margin)));
+}
+#endif
+
+#ifdef CLIP_LEVELS
+// A gather within this many voxels of the faces of the finest grid holding its surface blends with the same
+// gather started in the next level, fully so at the faces: as the finer levels follow the camera, a surface
+// crossing out of one goes over smoothly instead of popping.
+const float kClipBand = 4.0;
+
+// The finest grid holding p (-1: the grid above, k: clip level k), and how far in p is: 0 at its faces, 1 from
+// kClipBand voxels in (always 1 in the coarsest level, which has nothing around it).
+int startLevelOf(vec3 p, out float depth)
+{
+    vec3 lo = p - uGridOrigin, hi = uGridOrigin + vec3(uGridExtent) - p;
+    float inside = min(min(min(lo.x, lo.y), lo.z), min(min(hi.x, hi.y), hi.z));
+    if (inside >= 0.0) {
+        depth = clamp(inside / (kClipBand * uVoxelSize), 0.0, 1.0);
+        return -1;
+    }
+    for (int k = 0; k < CLIP_LEVELS; ++k) {
+        lo = p - uClipBox[k].xyz;
+        hi = uClipBox[k].xyz + vec3(uClipBox[k].w) - p;
+        inside = min(min(min(lo.x, lo.y), lo.z), min(min(hi.x, hi.y), hi.z));
+        if (inside >= 0.0 || k == CLIP_LEVELS - 1) {
+            depth = k == CLIP_LEVELS - 1 ? 1.0 : clamp(inside / (kClipBand * uClipGrid[k].x), 0.0, 1.0);
+            return k;
+        }
+    }
+    depth = 1.0;
+    return CLIP_LEVELS - 1;
+}
+#endif
+
+// How far along the normal cones start in grid `level` (-1: the grid above; k: clip level k): cone_offset of
+// its voxels, so that a cone leaves its surface's voxels in any level.
+float coneOffsetIn(int level)
+{
+#ifdef CLIP_LEVELS
+    if (level >= 0)
+        return uClipGrid[level].z;
+#endif
+    return uConeOffset;
+}
+
+// Adds sample s (premultiplied, of a texel `texel` metres wide) behind what a cone has gathered, over a step
+// of stepLength at distance t.
+void accumulate(vec4 s, float stepLength, float texel, float t, inout vec3 color, inout float alpha, inout float occlusion)
+{
+    if (s.a <= 1e-4)
+        return;
+    float a = correctOpacity(s.a, stepLength, texel);
+    color += (1.0 - alpha) * s.rgb * (a / s.a);
+    if (uAoEnabled)
+        occlusion += (1.0 - alpha) * a / (1.0 + t / uAoDistance);
+    alpha += (1.0 - alpha) * a;
+}
+
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity. The cone starts
 // `clearOffset` metres off a surface it leaves at cosine `clearCos` to its normal; its footprint stays within
 // 1 / CLEARANCE of its height above that surface's tangent plane, so that coarse lookups gather less of the
 // surface the cone starts from. A cone leaving at a low angle thus narrows.
-vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clearOffset, out float occlusion)
+vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clearOffset, int firstLevel, out float occlusion)
 {
     vec3 color = vec3(0.0);
     float alpha = 0.0;
     occlusion = 0.0;
     float t = uVoxelSize;
+#ifdef CLIP_LEVELS
+    // A cone that starts in a clip level skips the grids finer than it.
+    bool outside = firstLevel >= 0;
+    for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99 && firstLevel < 0; ++step) {
+#else
     for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
+#endif
         float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, uVoxelSize));
         float level = coneMipLevel(d, uVoxelSize, uMaxLevel);
         vec3 uvw = (origin + t * dir - uGridOrigin) / uGridExtent;
+#ifdef CLIP_LEVELS
+        // Before a lookup reaches past this grid, on into the coarser levels.
+        if (!insideGrid(uvw, d / uGridExtent)) {
+            outside = true;
+            break;
+        }
+#else
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
             break;
+#endif
         float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
-        vec4 s = sampleVolume(uvw, level, dir);
-        if (s.a > 1e-4) {
-            float a = correctOpacity(s.a, stepLength, uVoxelSize * exp2(level));
-            color += (1.0 - alpha) * s.rgb * (a / s.a);
-            if (uAoEnabled)
-                occlusion += (1.0 - alpha) * a / (1.0 + t / uAoDistance);
-            alpha += (1.0 - alpha) * a;
-        }
+        accumulate(sampleVolume(uvw, level, dir), stepLength, uVoxelSize * exp2(level), t, color, alpha, occlusion);
         t += stepLength;
     }
+#ifdef CLIP_LEVELS
+    // The same in each coarser level the cone reaches, the same t going on; the coarsest ends at its faces.
+    for (int k = 0; k < CLIP_LEVELS; ++k) {
+        if (k < firstLevel)
+            continue;
+        if (!outside || alpha >= 0.99 || t >= uMaxDistance)
+            break;
+        outside = false;
+        float voxel = uClipGrid[k].x;
+        float margin = k + 1 < CLIP_LEVELS ? 1.0 : 0.0;
+        for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
+            float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, voxel));
+            float level = coneMipLevel(d, voxel, uClipGrid[k].y);
+            vec3 uvw = (origin + t * dir - uClipBox[k].xyz) / uClipBox[k].w;
+            if (!insideGrid(uvw, margin * d / uClipBox[k].w)) {
+                outside = true;
+                break;
+            }
+            float stepLength = coneStepLength(d, voxel, uStepFactor);
+            accumulate(sampleClip(k, uvw, level, dir), stepLength, voxel * exp2(level), t, color, alpha, occlusion);
+            t += stepLength;
+        }
+    }
+#endif
     return vec4(color, alpha);
 }
 
@@ -103,14 +227,38 @@ void tangentBasis(vec3 n, out vec3 t, out vec3 b)
     b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
+// One cone from surface point p (normal n), starting coneOffsetIn() out along n in the finest grid holding p;
+// in a clipmap, near that grid's faces, blended with the same cone started in the next level.
+vec4 traceSurfaceCone(vec3 p, vec3 n, vec3 dir, float tanHalf, float clearCos, out float occlusion)
+{
+    int level = -1;
+#ifdef CLIP_LEVELS
+    float depth;
+    level = startLevelOf(p, depth);
+#endif
+    float offset = coneOffsetIn(level);
+    vec4 traced = traceCone(p + n * offset, dir, tanHalf, clearCos, offset, level, occlusion);
+#ifdef CLIP_LEVELS
+    if (depth < 1.0) {
+        float coarseOcclusion;
+        float coarseOffset = coneOffsetIn(level + 1);
+        vec4 coarse = traceCone(p + n * coarseOffset, dir, tanHalf, clearCos, coarseOffset, level + 1, coarseOcclusion);
+        traced = mix(coarse, traced, depth);
+        occlusion = mix(coarseOcclusion, occlusion, depth);
+    }
+#endif
+    return traced;
+}
+
 #ifdef MAX_CONES
 // The diffuse cone set (core/ConeSet): tangent-space axes whose weights split the cosine lobe, summing to one.
 uniform int uConeCount;
 uniform vec4 uCones[MAX_CONES]; // tangent-space axis, w = weight
 uniform float uDiffuseTanHalf;
 
-// The diffuse cones around n from origin: rgb = sum_i w_i L_i (irradiance / pi), a = ambient visibility.
-vec4 gatherDiffuse(vec3 origin, vec3 n)
+// The diffuse cones around n from surface point p: rgb = sum_i w_i L_i (irradiance / pi), a = ambient
+// visibility.
+vec4 gatherDiffuse(vec3 p, vec3 n)
 {
     vec3 t, b;
     tangentBasis(n, t, b);
@@ -120,7 +268,7 @@ vec4 gatherDiffuse(vec3 origin, vec3 n)
         vec3 axis = uCones[i].xyz;
         vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
         float coneOcclusion;
-        sum += uCones[i].w * traceCone(origin, dir, uDiffuseTanHalf, max(axis.z, 0.05), uConeOffset, coneOcclusion).rgb;
+        sum += uCones[i].w * traceSurfaceCone(p, n, dir, uDiffuseTanHalf, max(axis.z, 0.05), coneOcclusion).rgb;
         occlusion += uCones[i].w * coneOcclusion;
     }
     return vec4(sum, clamp(1.0 - occlusion, 0.0, 1.0));

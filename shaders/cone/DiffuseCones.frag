@@ -24,6 +24,6 @@ void main()
     uvec4 surface = texelFetch(gSurface, pixel, 0);
     vec3 p = uCameraPosition + surfaceFromCamera(surface, pixel);
     vec3 n = surfaceNormal(surface);
-    oDiffuse = gatherDiffuse(p + n * uConeOffset, n);
+    oDiffuse = gatherDiffuse(p, n);
     countSamples();
 }

@@ -31,6 +31,6 @@ void main()
     float lobeHalf = acos(pow(0.5, 1.0 / max(shininess, 1e-3)));
     float tanHalf = max(tan(min(lobeHalf, 1.5)), uSpecularMinTanHalf);
     float unused;
-    oSpecular = vec4(traceCone(uCameraPosition + fromCamera + n * uConeOffset, mirror, tanHalf, max(dot(mirror, n), 0.05), uConeOffset, unused).rgb, 1.0);
+    oSpecular = vec4(traceSurfaceCone(uCameraPosition + fromCamera, n, mirror, tanHalf, max(dot(mirror, n), 0.05), unused).rgb, 1.0);
     countSamples();
 }

@@ -153,7 +153,7 @@ void gatherCell(ivec3 cell)
     int sides = (twoSided ? 2 : 1) * uOne;
     for (int side = 0; side < sides; ++side) {
         vec3 direction = side == 0 ? n : -n;
-        storeGathered(cell, side == 0, gatherDiffuse(centre + direction * uConeOffset, direction));
+        storeGathered(cell, side == 0, gatherDiffuse(centre, direction));
     }
 }
 

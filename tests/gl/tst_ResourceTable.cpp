@@ -103,7 +103,7 @@ render::FrameStats ResourceTableTest::frame(render::Pipeline& pipeline)
 {
     render::FrameContext context { *m_shaders, *m_scene, m_settings, m_versions, m_voxels, m_shadows,
         m_screen, m_cones, render::Aabb {}, render::Camera {}, glm::mat4(1.0f), glm::mat4(1.0f),
-        glm::mat3(1.0f), nullptr, 0, render::FrameShape {}, &pipeline.resources() };
+        glm::mat3(1.0f), nullptr, 0, render::FrameShape {}, &pipeline.resources(), m_voxels.frame, {} };
     return pipeline.execute(context);
 }
 

@@ -1,0 +1,266 @@
+#include "GlTestContext.h"
+#include "TestSupport.h"
+
+#include "document/SceneLoader.h"
+#include "imageio/ImageMetrics.h"
+#include "reference/ReferenceRenderer.h"
+#include "scene/VoxelTextureEstimate.h"
+
+#include <QtTest>
+
+using namespace vct;
+
+namespace {
+
+constexpr int kSize = 48;
+
+/** Where `name` is in @p stats, or null. */
+const render::PassStats* passNamed(const render::FrameStats& stats, const std::string& name)
+{
+    for (const render::PassStats& p : stats.passes)
+        if (p.name == name)
+            return &p;
+    return nullptr;
+}
+
+} // namespace
+
+/**
+ * A clipmap (voxel_mode=clipmap, core/ClipLevelPass, core/ClipmapLayout): nested grids, the finer ones around
+ * the camera. It must see near the camera what a dense grid of its finest cells sees, count and check every
+ * level's textures, redo only the levels that moved, and not pop as the camera flies on.
+ */
+class ClipmapTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void finestLevelHoldsTheFinerGridsVoxels();
+    void everyLevelIsCountedAndChecked();
+    void onlyLevelsThatMoveAreRedone();
+    void slowFlightDoesNotPop();
+
+private:
+    render::RadianceImage render(const render::RenderSettings& settings, const render::Camera& camera);
+    render::RenderSettings clipmap(int levels, int resolution) const;
+    test::GlTestContext m_gl;
+    render::Scene m_scene;
+};
+
+void ClipmapTest::initTestCase()
+{
+    m_gl = test::GlTestContext::create();
+    QVERIFY2(m_gl.renderer, m_gl.error.c_str());
+    QString error;
+    const bool loaded = doc::SceneLoader::load(QStringLiteral("builtin:cornell_point"), m_scene, &error);
+    QVERIFY2(loaded, qPrintable(error));
+    m_gl.renderer->setScene(m_scene);
+}
+
+render::RenderSettings ClipmapTest::clipmap(int levels, int resolution) const
+{
+    render::RenderSettings settings;
+    settings.voxelMode = render::VoxelMode::Clipmap;
+    settings.clipLevels = levels;
+    settings.voxelResolution = resolution;
+    settings.shadowMapSize = 256;
+    return settings;
+}
+
+render::RadianceImage ClipmapTest::render(
+    const render::RenderSettings& settings, const render::Camera& camera)
+{
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->renderFrame(camera, kSize, kSize);
+    return m_gl.renderer->readFrame();
+}
+
+// Two levels of 32^3 have the cells of a 64^3 grid around the camera, on the same lattice: inside the finest
+// level, its voxels hold what the 64^3 grid's do (the same voxelization, the same light). Its outermost
+// voxels may differ: a triangle's fragments beyond a grid's faces are dropped, where the dense grid's voxel
+// there also takes those of its neighbours.
+void ClipmapTest::finestLevelHoldsTheFinerGridsVoxels()
+{
+    render::RenderSettings dense;
+    dense.shadowMapSize = 256;
+    dense.voxelResolution = 64;
+    dense.bounces = 1; // the first-bounce light: the same injection in both
+    render(dense, m_scene.camera);
+    const glm::vec3 denseOrigin = m_gl.renderer->gridOrigin();
+    const float voxel = m_gl.renderer->voxelSize();
+    int denseSize = 0;
+    const std::vector<float> denseAlbedo = m_gl.renderer->readVoxels("albedo", 0, denseSize);
+    const std::vector<float> denseRadiance = m_gl.renderer->readVoxels("radiance", 0, denseSize);
+    render::RenderSettings clipped = clipmap(2, 32);
+    clipped.bounces = 1;
+    render(clipped, m_scene.camera);
+    QCOMPARE(m_gl.renderer->voxelSize(), voxel);
+    const glm::vec3 offset = (m_gl.renderer->gridOrigin() - denseOrigin) / voxel;
+    const glm::ivec3 shift = glm::ivec3(glm::round(offset));
+    QVERIFY(glm::all(glm::lessThan(glm::abs(offset - glm::vec3(shift)), glm::vec3(1e-3f))));
+    int size = 0;
+    const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
+    const std::vector<float> radiance = m_gl.renderer->readVoxels("radiance", 0, size);
+    QCOMPARE(size, 32);
+    int occupied = 0, differing = 0;
+    double worstRadiance = 0.0, brightest = 0.0;
+    for (int z = 0; z < size; ++z)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const std::size_t i
+                    = (std::size_t(z) * size * size + std::size_t(y) * size + std::size_t(x)) * 4;
+                const glm::ivec3 d = glm::ivec3(x, y, z) + shift;
+                const std::size_t j = (std::size_t(d.z) * denseSize * denseSize + std::size_t(d.y) * denseSize
+                                          + std::size_t(d.x))
+                    * 4;
+                const bool border = glm::any(glm::equal(glm::ivec3(x, y, z), glm::ivec3(0)))
+                    || glm::any(glm::equal(glm::ivec3(x, y, z), glm::ivec3(size - 1)));
+                if (border) // the voxelizer drops what falls beyond a grid: a dense grid's border voxels hold
+                            // more
+                    continue;
+                occupied += albedo[i + 3] > 0.0f ? 1 : 0;
+                bool same = true;
+                for (int c = 0; c < 4; ++c)
+                    same = same
+                        && std::abs(albedo[i + std::size_t(c)] - denseAlbedo[j + std::size_t(c)])
+                            <= 2.0f / 255.0f;
+                differing += same ? 0 : 1;
+                for (int c = 0; c < 3; ++c) {
+                    worstRadiance = std::max(worstRadiance,
+                        double(std::abs(radiance[i + std::size_t(c)] - denseRadiance[j + std::size_t(c)])));
+                    brightest = std::max(brightest, double(denseRadiance[j + std::size_t(c)]));
+                }
+            }
+    qInfo("finest level at voxel offset (%d, %d, %d) of the 64^3 grid: %d occupied voxels, %d with another "
+          "albedo, "
+          "radiance within %.2e of the brightest %.3f",
+        shift.x, shift.y, shift.z, occupied, differing, worstRadiance, brightest);
+    QVERIFY(occupied > 100);
+    QVERIFY2(differing <= occupied / 100, qPrintable(QString::number(differing)));
+    QVERIFY2(worstRadiance <= 1e-3 * brightest, qPrintable(QString::number(worstRadiance)));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// Every level's textures are in the memory table, by the names the GL-free estimate gives them, at the
+// estimate's size and as GL reports them; the NaN check looks into every level.
+void ClipmapTest::everyLevelIsCountedAndChecked()
+{
+    const render::RenderSettings settings = clipmap(3, 16);
+    const render::FrameStats stats = m_gl.renderer->renderFrame(m_scene.camera, kSize, kSize);
+    (void)stats;
+    render(settings, m_scene.camera);
+    const std::vector<render::VoxelTextureMemory> memory = m_gl.renderer->voxelMemory();
+    render::VoxelSceneNeeds needs;
+    needs.emission = m_scene.hasEmissiveMaterial();
+    needs.areaLights = false;
+    int levelTwo = 0;
+    for (const render::VoxelTextureEstimate& estimate : render::VoxelTextureEstimate::of(settings, needs)) {
+        const auto it = std::find_if(memory.begin(), memory.end(),
+            [&](const render::VoxelTextureMemory& m) { return m.name == estimate.name; });
+        QVERIFY2(it != memory.end(), estimate.name.c_str());
+        QCOMPARE(std::uint64_t(it->totalBytes()), estimate.bytes);
+        QCOMPARE(it->glBytes, it->totalBytes());
+        levelTwo += estimate.name.rfind("clip level 2: ", 0) == 0 ? 1 : 0;
+    }
+    QVERIFY(levelTwo >= 4);
+    std::size_t total = 0;
+    for (const render::VoxelTextureMemory& m : memory)
+        total += m.totalBytes();
+    QCOMPARE(m_gl.renderer->voxelBytes(), total);
+    int checkedInLevels = 0;
+    for (const render::NonFiniteCount& c : m_gl.renderer->countNonFinite()) {
+        QVERIFY2(c.count == 0, qPrintable(QString("%1: %2").arg(c.resource.c_str()).arg(c.count)));
+        checkedInLevels += c.resource.rfind("clip level", 0) == 0 ? 1 : 0;
+    }
+    QVERIFY(checkedInLevels > 0);
+}
+
+// The coarsest level is the grid around the scene and never moves; the finest follows the camera in steps of
+// two of its voxels, and a camera move under that redoes nothing.
+void ClipmapTest::onlyLevelsThatMoveAreRedone()
+{
+    render(clipmap(2, 32), m_scene.camera);
+    const float step = 2.0f * m_gl.renderer->voxelSize();
+    render::Camera camera = m_scene.camera;
+    // Mid-step, so a small move stays within it.
+    const glm::vec3 corner = m_gl.renderer->gridOrigin();
+    const float extent = m_gl.renderer->voxelSize() * float(m_gl.renderer->voxelResolution());
+    const glm::vec3 mid = corner + glm::vec3(0.5f * extent);
+    camera.lookAt += mid - camera.position;
+    camera.position = mid;
+    m_gl.renderer->renderFrame(camera, kSize, kSize);
+    camera.position.x += 0.2f * step;
+    camera.lookAt.x += 0.2f * step;
+    render::FrameStats stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    QVERIFY(passNamed(stats, "voxelize") && passNamed(stats, "clip level 1: voxelize"));
+    QCOMPARE(passNamed(stats, "voxelize")->action, std::string("reused"));
+    QCOMPARE(passNamed(stats, "clip level 1: voxelize")->action, std::string("reused"));
+    camera.position.x += 3.0f * step;
+    camera.lookAt.x += 3.0f * step;
+    stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    QCOMPARE(passNamed(stats, "voxelize")->action, std::string("run"));
+    QCOMPARE(passNamed(stats, "voxelize")->reason, std::string("the grid moved with the camera"));
+    QCOMPARE(passNamed(stats, "clip level 1: voxelize")->action, std::string("reused"));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// Flying slowly through the room (a tenth of a fine voxel a frame), the finest level steps to its next place
+// and redoes its voxels there; what the cones see must be nearly what they saw. Each frame's error against
+// the path tracer (64 samples a pixel, the same seed every frame, so its noise moves little) changes by no
+// more than 10% from one frame to the next, and the image changes between frames about as much as a dense
+// grid's of the same fine cells, which never moves.
+void ClipmapTest::slowFlightDoesNotPop()
+{
+    render::RenderSettings dense;
+    dense.shadowMapSize = 256;
+    dense.voxelResolution = 64;
+    const render::RenderSettings clipped = clipmap(2, 32);
+    render(clipped, m_scene.camera);
+    const float fineVoxel = m_gl.renderer->voxelSize();
+    // Inside the room, looking at its back wall, so that the finest level is centred on the camera rather
+    // than held at the grid's edge.
+    render::Camera camera = m_scene.camera;
+    camera.position = glm::vec3(0.0f, 0.0f, 0.6f);
+    camera.lookAt = glm::vec3(0.0f, 0.0f, -1.0f);
+    const glm::vec3 along = glm::normalize(camera.lookAt - camera.position) * (0.1f * fineVoxel);
+    render::ReferenceSettings reference;
+    reference.threads = 2;
+    render::RadianceImage lastClip, lastDense;
+    double worstClipChange = 0.0, worstDenseChange = 0.0, lastError = -1.0, worstJump = 0.0;
+    int steps = 0;
+    glm::vec3 lastCorner(0.0f);
+    for (int frame = 0; frame < 40; ++frame) {
+        render::ReferenceRenderer tracer(m_scene, camera, kSize, kSize, reference);
+        tracer.render(64);
+        const render::RadianceImage truth = tracer.image();
+        const render::RadianceImage denseImage = render(dense, camera);
+        const render::RadianceImage clip = render(clipped, camera);
+        steps += frame > 0 && m_gl.renderer->gridOrigin() != lastCorner ? 1 : 0;
+        lastCorner = m_gl.renderer->gridOrigin();
+        const double error = io::ImageMetrics::relativeMse(clip, truth);
+        if (frame > 0) {
+            worstClipChange = std::max(worstClipChange, io::ImageMetrics::relativeMse(clip, lastClip));
+            worstDenseChange
+                = std::max(worstDenseChange, io::ImageMetrics::relativeMse(denseImage, lastDense));
+            worstJump = std::max(worstJump, std::abs(error - lastError) / lastError);
+        }
+        lastClip = clip;
+        lastDense = denseImage;
+        lastError = error;
+        camera.position += along;
+        camera.lookAt += along;
+    }
+    qInfo(
+        "40 frames, a tenth of a fine voxel each, the finest level stepping %d times: error against the path "
+        "tracer changes by at most %.1f%% a frame (last %.4f); largest change between frames %.2e (dense "
+        "64^3: %.2e)",
+        steps, 100.0 * worstJump, lastError, worstClipChange, worstDenseChange);
+    QVERIFY(steps >= 1);
+    QVERIFY2(worstJump <= 0.1, qPrintable(QString::number(worstJump)));
+    QVERIFY2(worstClipChange <= 2.0 * worstDenseChange + 1e-5,
+        qPrintable(QString("%1 against %2").arg(worstClipChange).arg(worstDenseChange)));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+QTEST_GUILESS_MAIN(ClipmapTest)
+#include "tst_Clipmap.moc"
