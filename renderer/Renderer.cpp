@@ -346,12 +346,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     width = std::max(1, width);
     height = std::max(1, height);
     const Scene& scene = st.scene->scene();
-    // A clipmap's coarsest level is fitted as a dense grid of its finest cells would be (the margin of one
-    // cell depends on the cell count), so its levels lie on that grid's lattice.
-    const int levels = m_settings.gridLevels();
-    VoxelGridFrame sceneGrid = VoxelGridFrame::fit(
-        st.gridBounds.isEmpty() ? scene.bounds() : st.gridBounds, m_settings.voxelResolution << (levels - 1));
-    sceneGrid.resolution = m_settings.voxelResolution;
+    // A clipmap's coarsest level keeps a dense grid's margin of one of its own cells: geometry on the bounds
+    // must not fall in its outermost layer, where the voxelizer drops what a triangle's enlargement reaches
+    // beyond the grid (the atrium's outer walls read 0.067 instead of 0.062 with a finest cell's margin).
+    const VoxelGridFrame sceneGrid = VoxelGridFrame::fit(
+        st.gridBounds.isEmpty() ? scene.bounds() : st.gridBounds, m_settings.voxelResolution);
     if (!(sceneGrid == st.sceneGrid)) {
         // Dynamic meshes are part of the bounds: the grid follows them, so a move may refit the whole grid.
         st.sceneGrid = sceneGrid;

@@ -135,6 +135,15 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
         m_resolution->addItem(QString::number(res) + QStringLiteral("³"), res);
     m_resolution->setToolTip(
         tr("Voxel grid cells per side. Memory and voxelization time grow with the cube."));
+    m_gridLevels = new QComboBox;
+    m_gridLevels->setObjectName(QStringLiteral("gridLevelsCombo"));
+    m_gridLevels->addItem(tr("One grid"), 1);
+    for (int levels = 2; levels <= 4; ++levels)
+        m_gridLevels->addItem(tr("Clipmap, %1 levels").arg(levels), levels);
+    m_gridLevels->setToolTip(
+        tr("One grid around the scene, or a clipmap: nested grids of this resolution, each finer one half as "
+           "wide and following the camera, for finer voxels near it at one grid's memory per level "
+           "(voxel_mode, clip_levels)"));
     m_conservative = makeCheck(tr("Conservative voxelization"),
         tr("Mark every voxel a triangle touches, so thin and oblique walls leave no holes"));
     m_conservative->setObjectName(QStringLiteral("conservativeCheck"));
@@ -270,6 +279,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     };
     auto [voxels, voxelForm] = group(tr("Voxels"));
     voxelForm->addRow(tr("Resolution"), m_resolution);
+    voxelForm->addRow(tr("Grids"), m_gridLevels);
     voxelForm->addRow(m_conservative);
     voxelForm->addRow(m_anisotropic);
     voxelForm->addRow(tr("Bounces"), m_bounces);
@@ -326,6 +336,16 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
         });
     };
     bindCombo(m_resolution, &render::RenderSettings::voxelResolution);
+    connect(m_gridLevels, &QComboBox::currentIndexChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const int levels = m_gridLevels->itemData(row).toInt();
+        edit(m_gridLevels, [&](render::RenderSettings& s) {
+            s.voxelMode = levels > 1 ? render::VoxelMode::Clipmap : render::VoxelMode::Dense;
+            if (levels > 1)
+                s.clipLevels = levels;
+        });
+    });
     bindCombo(m_shadowMap, &render::RenderSettings::shadowMapSize);
     bindCombo(m_bounces, &render::RenderSettings::bounces);
     bindCombo(m_indirectResolution, &render::RenderSettings::indirectDivisor);
@@ -533,7 +553,7 @@ void RenderSettingsDock::load()
         return;
     const render::RenderSettings& s = m_document->state().settings;
 
-    const QList<QWidget*> editors { m_resolution, m_conservative, m_anisotropic, m_bounces,
+    const QList<QWidget*> editors { m_resolution, m_gridLevels, m_conservative, m_anisotropic, m_bounces,
         m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache,
         m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step, m_maxDistance,
         m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap,
@@ -543,6 +563,7 @@ void RenderSettingsDock::load()
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
 
     selectIntItem(m_resolution, s.voxelResolution, QString::number(s.voxelResolution) + QStringLiteral("³"));
+    selectIntItem(m_gridLevels, s.gridLevels(), tr("Clipmap, %1 levels").arg(s.gridLevels()));
     m_conservative->setChecked(s.conservativeVoxelization);
     m_anisotropic->setChecked(s.anisotropicMips);
     selectIntItem(m_bounces, s.bounces, QString::number(s.bounces));

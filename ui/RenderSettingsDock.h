@@ -74,6 +74,7 @@ private:
     QPushButton* m_balanced = nullptr;
     QPushButton* m_high = nullptr;
     QComboBox* m_resolution = nullptr;
+    QComboBox* m_gridLevels = nullptr; ///< a dense grid (1) or a clipmap's levels
     QCheckBox* m_conservative = nullptr;
     QCheckBox* m_anisotropic = nullptr;
     QComboBox* m_bounces = nullptr;

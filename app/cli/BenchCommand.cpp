@@ -91,8 +91,12 @@ int BenchCommand::run(int argc, char** argv)
         QStringLiteral(
             "targets: the interactive preview's share of --width/--height (default 0.35, as the editor)."),
         QStringLiteral("S"), QStringLiteral("0.35"));
+    const QCommandLineOption sequenceOption(QStringLiteral("sequence"),
+        QStringLiteral("plan: only the edit sequences whose name contains TEXT (say, \"fly\"), and no full "
+                       "rebuild."),
+        QStringLiteral("TEXT"));
     parser.addOptions({ widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption,
-        naiveSetOption, referenceOption, previewScaleOption });
+        naiveSetOption, referenceOption, previewScaleOption, sequenceOption });
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -173,22 +177,31 @@ int BenchCommand::run(int argc, char** argv)
             render::Renderer renderer(context->procAddressFunction());
             renderer.setSettings(settings);
             std::vector<SequenceResult> results;
+            const std::string only = parser.value(sequenceOption).toStdString();
             for (const EditSequence& sequence : PlanBenchmark::standardSequences(scene)) {
+                if (!only.empty() && sequence.name.find(only) == std::string::npos)
+                    continue;
                 results.push_back(PlanBenchmark::run(renderer, scene, sequence, width, height, frames));
-                std::fprintf(stderr, "  %-40s planned %8.1f ms  forced %8.1f ms\n", sequence.name.c_str(),
-                    results.back().plannedMs, results.back().forcedMs);
+                std::fprintf(stderr, "  %-40s planned %8.1f ms (worst %.1f)  forced %8.1f ms\n",
+                    sequence.name.c_str(), results.back().plannedMs, results.back().plannedWorstMs,
+                    results.back().forcedMs);
             }
-            char header[512];
-            std::snprintf(header, sizeof header,
-                "`vct-bench plan %s --width %d --height %d --voxel-res %d --frames %d` on %s\n\n",
-                qPrintable(args[1]), width, height, settings.voxelResolution, frames,
-                context->description().c_str());
+            std::string command = "`vct-bench plan " + args[1].toStdString() + " --width "
+                + std::to_string(width) + " --height " + std::to_string(height) + " --voxel-res "
+                + std::to_string(settings.voxelResolution) + " --frames " + std::to_string(frames);
+            for (const QString& a : parser.values(setOption))
+                command += " --set " + a.toStdString();
+            if (!only.empty())
+                command += " --sequence \"" + only + "\"";
+            const std::string header = command + "` on " + context->description() + "\n\n";
             // The editor spreads bounce iterations over frames two at a time (ui/ViewportWidget).
             constexpr int kEditorIterationsPerFrame = 2;
-            const std::vector<RebuildResult> rebuilds = PlanBenchmark::rebuilds(
-                renderer, scene.camera, width, height, kEditorIterationsPerFrame, std::max(1, frames / 2));
-            report = header + PlanBenchmark::markdown(results)
-                + PlanBenchmark::markdown(rebuilds, kEditorIterationsPerFrame);
+            report = header + PlanBenchmark::markdown(results);
+            if (only.empty())
+                report
+                    += PlanBenchmark::markdown(PlanBenchmark::rebuilds(renderer, scene.camera, width, height,
+                                                   kEditorIterationsPerFrame, std::max(1, frames / 2)),
+                        kEditorIterationsPerFrame);
         }
     } catch (const std::exception& e) {
         return fail(3, QString::fromUtf8(e.what()));

@@ -23,7 +23,8 @@ struct EditSequence {
 /** Median GPU ms per frame of a sequence with the plan and with every pass forced, and the planned passes. */
 struct SequenceResult {
     std::string name;
-    double plannedMs = 0.0;
+    double plannedMs = 0.0; ///< median GPU ms per frame
+    double plannedWorstMs = 0.0; ///< the longest planned frame
     double forcedMs = 0.0;
     std::vector<render::PassStats> plannedPasses; ///< median ms per pass, action and reason of the last frame
 };

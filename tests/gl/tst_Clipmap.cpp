@@ -85,12 +85,19 @@ void ClipmapTest::finestLevelHoldsTheFinerGridsVoxels()
     dense.shadowMapSize = 256;
     dense.voxelResolution = 64;
     dense.bounces = 1; // the first-bounce light: the same injection in both
+    // A grid keeps a margin of one of its cells around the bounds, so the 64^3 grid is fitted around bounds
+    // widened to give it the clipmap's 32^3 extent: the same lattice, twice as fine.
+    const render::Aabb bounds = m_scene.bounds();
+    const float widen = (1.0f + 2.0f / 30.0f) / (1.0f + 2.0f / 62.0f);
+    m_gl.renderer->setGridBounds(
+        { bounds.center() - 0.5f * widen * bounds.size(), bounds.center() + 0.5f * widen * bounds.size() });
     render(dense, m_scene.camera);
     const glm::vec3 denseOrigin = m_gl.renderer->gridOrigin();
     const float voxel = m_gl.renderer->voxelSize();
     int denseSize = 0;
     const std::vector<float> denseAlbedo = m_gl.renderer->readVoxels("albedo", 0, denseSize);
     const std::vector<float> denseRadiance = m_gl.renderer->readVoxels("radiance", 0, denseSize);
+    m_gl.renderer->setGridBounds({});
     render::RenderSettings clipped = clipmap(2, 32);
     clipped.bounces = 1;
     render(clipped, m_scene.camera);

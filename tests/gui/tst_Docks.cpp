@@ -363,6 +363,18 @@ void TstDocks::renderSettingsResolutionCombo()
     QTest::keyClick(combo, Qt::Key_Down);
     QCOMPARE(document->state().settings.voxelResolution, 128);
 
+    // One grid or a clipmap's levels, one undoable edit of voxel_mode and clip_levels together.
+    auto* grids = child<QComboBox>(&dock, "gridLevelsCombo");
+    QCOMPARE(grids->currentData().toInt(), 1);
+    const int steps = document->undoStack()->count();
+    grids->setCurrentIndex(grids->findData(3));
+    QCOMPARE(document->state().settings.voxelMode, render::VoxelMode::Clipmap);
+    QCOMPARE(document->state().settings.clipLevels, 3);
+    QCOMPARE(document->undoStack()->count(), steps + 1);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().settings.voxelMode, render::VoxelMode::Dense);
+    QCOMPARE(grids->currentData().toInt(), 1);
+
     // "auto" (the spin box's minimum) stores a negative distance.
     auto* distance = child<QDoubleSpinBox>(&dock, "maxDistance");
     QCOMPARE(distance->text(), QStringLiteral("auto"));
