@@ -112,7 +112,8 @@ public:
     std::vector<float> readVoxels(const std::string& channel, int level, int& size) const;
 
     const Scene& scene() const;
-    /** Grid placement in use (valid after the first frame). */
+    /** Grid placement in use (valid after the first frame): a clipmap's finest level, which follows the
+     * camera. */
     float voxelSize() const;
     int voxelResolution() const;
     glm::vec3 gridOrigin() const;

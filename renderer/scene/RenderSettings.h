@@ -53,8 +53,9 @@ struct RenderSettings {
     int bounces = kConvergedBounces;
     static constexpr int kConvergedBounces = 0;
     static constexpr int kMaxBounces = 64; ///< also the most iterations `converged` runs
-    /// Voxels per side of one cell of the bounce iteration's gather (2 or 4). Light that has bounced once
-    /// already varies slowly, so its cells can be coarser than the irradiance cache's.
+    /// Voxels per side of one cell of the bounce iteration's gather (2, 4 or 8). Light that has bounced once
+    /// already varies slowly, so its cells can be coarser than the irradiance cache's; 8 takes a quarter off
+    /// the bounce pass for a 7% worse atrium (docs/ACCURACY.md).
     int bounceCellSize = 4;
     /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to
     /// come estimated from how fast it shrinks, are both under this, or when adding that change still to come
@@ -72,8 +73,9 @@ struct RenderSettings {
     int irradianceCellSize = 2;
     int diffuseConeCount = 5; ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
     /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30
-    /// degrees is on the accuracy frontier of both studied scenes, and nine cones were no better
-    /// (docs/ACCURACY.md).
+    /// degrees with five cones is on the accuracy frontier at its cost. With every bounce, 13 cones of 28
+    /// degrees (the High preset) are closer to the references for 1.3 times the full frame
+    /// (docs/ACCURACY.md, "More and narrower cones").
     float diffuseApertureDeg = 30.0f;
     float specularApertureDeg = 15.0f; ///< Narrowest specular cone; glossier lobes are clamped to it.
     float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
