@@ -55,9 +55,7 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
         const VoxelVolume& level = *frame.coarserLevels[k];
         boxes.emplace_back(level.frame.origin, level.frame.extent);
         grids.emplace_back(level.frame.voxelSize(), float(level.frame.levelCount() - 1),
-            frame.settings.coneOffsetVoxels
-                * std::max(level.frame.voxelSize(), frame.sceneGrid.extent / float(kOffsetGrid)),
-            0.0f);
+            coneOffsetMetres(frame, level.frame), 0.0f);
         level.coneRadiance().bindUnit(GLuint(CLIP_RADIANCE_UNIT + int(k)));
         if (anisotropic)
             level.coneDirectional().bindUnit(GLuint(CLIP_TOWARDS_UNIT + int(k)));
@@ -74,9 +72,14 @@ void ConeTracingSetup::addDefines(std::vector<std::string>& defines, const Frame
 
 float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame)
 {
+    return coneOffsetMetres(frame, frame.voxels.frame);
+}
+
+float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame, const VoxelGridFrame& grid)
+{
     // On a clipmap's fine levels too: their voxels are those of a finer grid around the scene.
     return frame.settings.coneOffsetVoxels
-        * std::max(frame.voxels.frame.voxelSize(), frame.sceneGrid.extent / float(kOffsetGrid));
+        * std::max(grid.voxelSize(), frame.sceneGrid.extent / float(kOffsetGrid));
 }
 
 ConeTraceKey ConeTraceKey::of(const FrameContext& frame)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/VoxelGridFrame.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
@@ -27,6 +28,8 @@ public:
      * 10% too bright at 256^3 (docs/ACCURACY.md, "Finer grids").
      */
     static float coneOffsetMetres(const FrameContext& frame);
+    /** The same for cones starting in @p grid (a clipmap's level). */
+    static float coneOffsetMetres(const FrameContext& frame, const VoxelGridFrame& grid);
     static constexpr int kOffsetGrid = 128;
     /**
      * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to

@@ -22,11 +22,12 @@ layout(binding = 5) uniform sampler3D uRadiance;
 layout(binding = 6) uniform sampler3D uTowards;
 uniform vec2 uStack; // in tiles: from one tile's start to the next, and the stack's depth
 
-// Chain `tile` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a texture of its own has.
-vec4 sampleTowards(int tile, vec3 uvw, float l)
+// Chain `tile` of stack `towards` at uvw (in the grid's [0, 1]^3) and level l; the gaps read as the border a
+// texture of its own has.
+vec4 sampleTowards(sampler3D towards, int tile, vec3 uvw, float l)
 {
     uvw.z = (uvw.z + uStack.x * float(tile)) / uStack.y;
-    return textureLod(uTowards, uvw, l);
+    return textureLod(towards, uvw, l);
 }
 #endif
 
@@ -54,45 +55,45 @@ uniform float uConeOffset;        // metres: where cones start along the surface
 
 const int kMaxSteps = 256;
 
-// The volume as a cone travelling along dir sees it at a (fractional) mip level.
-vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
-{
+// A grid's volume (`radiance`, and with anisotropic mips the chains `towards` above its level 0) as a cone
+// travelling along dir sees it at a (fractional) mip level. SAMPLE_GRID drops `towards` where there are no
+// chains.
 #ifndef ANISOTROPIC
+vec4 sampleGrid(sampler3D radiance, vec3 uvw, float level)
+{
     COUNT_FETCHES(1);
-    return textureLod(uRadiance, uvw, level);
+    return textureLod(radiance, uvw, level);
+}
+#define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, uvw, level)
 #else
+vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, vec3 dir)
+{
     // Level 0 and the three directional chains are fetched at every step, and blended by the level: llvmpipe
     // runs both sides of a branch on the level anyway, and written as a branch it fetched level 0 twice
     // (five fetches a step where four do; the cone loop ~20% faster).
     COUNT_FETCHES(4);
-    vec4 finest = textureLod(uRadiance, uvw, 0.0);
+    vec4 finest = textureLod(radiance, uvw, 0.0);
     vec3 w = dir * dir; // sums to one for a unit direction
     float l = max(level - 1.0, 0.0);
-    vec4 directional = w.x * sampleTowards(dir.x > 0.0 ? 0 : 1, uvw, l)
-        + w.y * sampleTowards(dir.y > 0.0 ? 2 : 3, uvw, l)
-        + w.z * sampleTowards(dir.z > 0.0 ? 4 : 5, uvw, l);
+    vec4 directional = w.x * sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l)
+        + w.y * sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l)
+        + w.z * sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l);
     return mix(finest, directional, clamp(level, 0.0, 1.0));
+}
+#define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, towards, uvw, level, dir)
 #endif
+
+// The grid's own volume.
+vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
+{
+    return SAMPLE_GRID(uRadiance, uTowards, uvw, level, dir);
 }
 
 #ifdef CLIP_LEVELS
-// Clip level k as a cone travelling along dir sees it, as sampleVolume() the grid's own volume.
+// Clip level k's volume.
 vec4 sampleClip(int k, vec3 uvw, float level, vec3 dir)
 {
-#ifndef ANISOTROPIC
-    COUNT_FETCHES(1);
-    return textureLod(uClipRadiance[k], uvw, level);
-#else
-    COUNT_FETCHES(4);
-    vec4 finest = textureLod(uClipRadiance[k], uvw, 0.0);
-    vec3 w = dir * dir;
-    float l = max(level - 1.0, 0.0);
-    vec3 z = (vec3(uvw.z) + uStack.x * vec3(dir.x > 0.0 ? 0.0 : 1.0, dir.y > 0.0 ? 2.0 : 3.0, dir.z > 0.0 ? 4.0 : 5.0)) / uStack.y;
-    vec4 directional = w.x * textureLod(uClipTowards[k], vec3(uvw.xy, z.x), l)
-        + w.y * textureLod(uClipTowards[k], vec3(uvw.xy, z.y), l)
-        + w.z * textureLod(uClipTowards[k], vec3(uvw.xy, z.z), l);
-    return mix(finest, directional, clamp(level, 0.0, 1.0));
-#endif
+    return SAMPLE_GRID(uClipRadiance[k], uClipTowards[k], uvw, level, dir);
 }
 
 // Whether uvw (in a grid's [0, 1]^3) is further than margin from the grid's faces.

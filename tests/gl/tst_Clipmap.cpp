@@ -122,8 +122,8 @@ void ClipmapTest::finestLevelHoldsTheFinerGridsVoxels()
                     * 4;
                 const bool border = glm::any(glm::equal(glm::ivec3(x, y, z), glm::ivec3(0)))
                     || glm::any(glm::equal(glm::ivec3(x, y, z), glm::ivec3(size - 1)));
-                if (border) // the voxelizer drops what falls beyond a grid: a dense grid's border voxels hold
-                            // more
+                // The voxelizer drops what falls beyond a grid: a dense grid's border voxels hold more.
+                if (border)
                     continue;
                 occupied += albedo[i + 3] > 0.0f ? 1 : 0;
                 bool same = true;
@@ -153,8 +153,6 @@ void ClipmapTest::finestLevelHoldsTheFinerGridsVoxels()
 void ClipmapTest::everyLevelIsCountedAndChecked()
 {
     const render::RenderSettings settings = clipmap(3, 16);
-    const render::FrameStats stats = m_gl.renderer->renderFrame(m_scene.camera, kSize, kSize);
-    (void)stats;
     render(settings, m_scene.camera);
     const std::vector<render::VoxelTextureMemory> memory = m_gl.renderer->voxelMemory();
     render::VoxelSceneNeeds needs;

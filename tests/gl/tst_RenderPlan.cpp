@@ -45,6 +45,8 @@ private:
     render::FrameStats planned();
     /** The room at 32^3 in an interactive view that runs one bounce iteration a frame. */
     void startInteractiveBounces();
+    /** A frame that runs every pass and every bounce iteration at once. */
+    render::RadianceImage renderedFromScratch();
     void expectSameAsForced(const char* what);
     const render::PassStats& pass(const std::string& name) const;
     void expectAction(const std::string& pass, const std::string& action);
@@ -105,6 +107,14 @@ void RenderPlanTest::startInteractiveBounces()
     m_gl.renderer->setSettings(settings);
     m_gl.renderer->setScene(m_scene);
     m_gl.renderer->setBounceIterationsPerFrame(1);
+}
+
+render::RadianceImage RenderPlanTest::renderedFromScratch()
+{
+    m_gl.renderer->setBounceIterationsPerFrame(0);
+    m_gl.renderer->invalidate();
+    m_gl.renderer->renderFrame(m_camera, 40, 40);
+    return m_gl.renderer->readFrame();
 }
 
 void RenderPlanTest::expectSameAsForced(const char* what)
@@ -415,10 +425,7 @@ void RenderPlanTest::bouncesConvergeAcrossFrames()
     while (!m_last.lightConverged)
         planned();
     const render::RadianceImage converged = m_plannedImage;
-    m_gl.renderer->setBounceIterationsPerFrame(0);
-    m_gl.renderer->invalidate();
-    m_gl.renderer->renderFrame(m_camera, 40, 40);
-    const render::RadianceImage fromScratch = m_gl.renderer->readFrame();
+    const render::RadianceImage fromScratch = renderedFromScratch();
     const double againstScratch = io::ImageMetrics::relativeMse(converged, fromScratch);
     const double firstFrame = io::ImageMetrics::relativeMse(firstAfterEdit, fromScratch);
     qInfo("converged over %d frames; after a 20%% light edit: first frame %.2e, converged %.2e relative MSE "
@@ -447,10 +454,7 @@ void RenderPlanTest::draggedObjectKeepsTheConvergedLight()
     for (int frames = 0; frames < 100 && !planned().lightConverged; ++frames) { }
     QVERIFY(m_last.lightConverged);
     const render::RadianceImage converged = m_plannedImage;
-    m_gl.renderer->setBounceIterationsPerFrame(0);
-    m_gl.renderer->invalidate();
-    m_gl.renderer->renderFrame(m_camera, 40, 40);
-    const render::RadianceImage fromScratch = m_gl.renderer->readFrame();
+    const render::RadianceImage fromScratch = renderedFromScratch();
     const double firstFrame = io::ImageMetrics::relativeMse(firstAfterMove, fromScratch);
     const double againstScratch = io::ImageMetrics::relativeMse(converged, fromScratch);
     qInfo(
