@@ -64,6 +64,21 @@ struct Renderer::State {
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
     std::uint64_t coneSamples = 0; ///< counted in the last frame
     int bounceIterationsPerFrame = 0;
+
+    /** Grid @p grid (Renderer::gridCount(), clamped): 0 the frame's own voxels, k clip level k. */
+    VoxelVolume& volumeOf(int grid)
+    {
+        grid = std::clamp(grid, 0, int(clipLevels.size()));
+        return grid == 0 ? voxels : clipLevels[std::size_t(grid - 1)]->volume();
+    }
+    /** The table holding grid @p grid's textures. */
+    ResourceTable& resourcesOf(int grid)
+    {
+        grid = std::clamp(grid, 0, int(clipLevels.size()));
+        return grid == 0 ? pipeline->resources() : clipLevels[std::size_t(grid - 1)]->pipeline().resources();
+    }
+    /** Grid @p grid's box-filtered levels for looking at (ensureInspectionMips), made if they are stale. */
+    void ensureInspectionMipsOf(int grid);
 };
 
 namespace {
@@ -101,6 +116,15 @@ void ensureInspectionMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder
     v.inspectionMipsKey = key;
     v.inspectionMipsSerial = v.inspectionMips.serial();
 }
+
+} // namespace
+
+void Renderer::State::ensureInspectionMipsOf(int grid)
+{
+    ensureInspectionMips(*shaders, boxMips, resourcesOf(grid), volumeOf(grid), scene->hasDynamicMeshes());
+}
+
+namespace {
 
 /**
  * The frame's passes. With a clipmap of @p gridLevels levels the coarser levels come after the shadow maps,
@@ -378,15 +402,16 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     FrameStats stats = st.pipeline->execute(frame);
     st.coneSamples = st.coneSampleCounter ? st.coneSampleCounter->read() : 0;
     st.staticMaterialEdits = Aabb {};
-    // Box levels made for inspecting light that has since changed are remade when next looked at.
-    if (st.voxels.inspectionMips
-        && (st.voxels.inspectionMipsKey != st.voxels.coneRadianceKey()
-            || st.voxels.inspectionMips.width() != st.voxels.frame.resolution))
-        st.voxels.inspectionMips = gl::Texture();
-    stats.voxelBytes = voxelBytes();
     std::vector<VoxelVolume*> volumes { &st.voxels };
     for (ClipLevelPass* level : st.clipLevels)
         volumes.push_back(&level->volume());
+    // Box levels made for inspecting light that has since changed are remade when next looked at.
+    for (VoxelVolume* v : volumes)
+        if (v->inspectionMips
+            && (v->inspectionMipsKey != v->coneRadianceKey()
+                || v->inspectionMips.width() != v->frame.resolution))
+            v->inspectionMips = gl::Texture();
+    stats.voxelBytes = voxelBytes();
     stats.occupiedVoxels = 0;
     for (VoxelVolume* v : volumes) {
         if (v->occupiedCountStale) {
@@ -433,20 +458,20 @@ void Renderer::present(unsigned framebuffer, int x, int y, int width, int height
     glBindVertexArray(0);
 }
 
-const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel)
+const VoxelListing& Renderer::listVoxels(int level, VoxelChannel channel, int grid)
 {
-    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
-        m_state->scene->hasDynamicMeshes());
-    return m_state->inspector.list(*m_state->shaders, m_state->voxels, level, channel);
+    grid = std::clamp(grid, 0, gridCount() - 1);
+    m_state->ensureInspectionMipsOf(grid);
+    return m_state->inspector.list(*m_state->shaders, m_state->volumeOf(grid), level, channel, grid);
 }
 
 std::size_t Renderer::drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel,
-    unsigned framebuffer, int x, int y, int width, int height, float exposure)
+    unsigned framebuffer, int x, int y, int width, int height, float exposure, int grid)
 {
     State& st = *m_state;
     if (width <= 0 || height <= 0)
         return 0;
-    listVoxels(level, channel);
+    listVoxels(level, channel, grid);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(x, y, width, height);
     glEnable(GL_SCISSOR_TEST);
@@ -497,8 +522,7 @@ void Renderer::setBounceIterationsPerFrame(int iterations)
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()
 {
-    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
-        m_state->scene->hasDynamicMeshes());
+    m_state->ensureInspectionMipsOf(0);
     std::vector<NonFiniteCount> counts
         = m_state->finiteCheck.run(*m_state->shaders, m_state->pipeline->resources());
     for (const ClipLevelPass* level : m_state->clipLevels)
@@ -513,6 +537,11 @@ std::vector<NonFiniteCount> Renderer::countNonFinite()
 int Renderer::voxelLevelCount() const
 {
     return m_state->voxels.radiance ? m_state->voxels.frame.levelCount() : 0;
+}
+
+int Renderer::gridCount() const
+{
+    return 1 + int(m_state->clipLevels.size());
 }
 
 RadianceImage Renderer::readFrame() const
@@ -533,11 +562,13 @@ RadianceImage Renderer::readFrame() const
     return image;
 }
 
-std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size) const
+std::vector<float> Renderer::readVoxels(const std::string& channel, int level, int& size, int grid) const
 {
-    ensureInspectionMips(*m_state->shaders, m_state->boxMips, m_state->pipeline->resources(), m_state->voxels,
-        m_state->scene->hasDynamicMeshes());
-    const VoxelVolume& v = m_state->voxels;
+    if (grid < 0 || grid >= gridCount())
+        throw std::invalid_argument(
+            "no grid " + std::to_string(grid) + " (there are " + std::to_string(gridCount()) + ")");
+    m_state->ensureInspectionMipsOf(grid);
+    const VoxelVolume& v = m_state->volumeOf(grid);
     static const char* const kDirectional[6]
         = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
     for (std::size_t d = 0; d < 6; ++d)
@@ -563,7 +594,7 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
     for (const char* name : { resource::kAlbedo, resource::kNormal, resource::kEmission, resource::kRadiance,
              resource::kBounced })
         if (channel == name)
-            texture = m_state->pipeline->resources().find(name);
+            texture = m_state->resourcesOf(grid).find(name);
     if (!texture || !*texture)
         throw std::invalid_argument(
             "no voxel channel '" + channel + "' (albedo, normal, emission, radiance, bounced)");

@@ -74,14 +74,17 @@ public:
      * window coordinates, origin bottom left) of a framebuffer: 0 or a widget's framebuffer object.
      */
     void present(unsigned framebuffer, int x, int y, int width, int height, float exposure);
-    /** The non-empty voxels of a level in a channel; rebuilt only when they or the request change. */
-    const VoxelListing& listVoxels(int level, VoxelChannel channel);
     /**
-     * Draws listVoxels(level, channel) as instanced cubes, seen by camera, into a rectangle of a framebuffer
-     * (cleared first); returns the number of cubes drawn.
+     * The non-empty voxels of a mip level in a channel of grid @p grid (gridCount(); 0 = the finest);
+     * rebuilt only when they or the request change.
+     */
+    const VoxelListing& listVoxels(int level, VoxelChannel channel, int grid = 0);
+    /**
+     * Draws listVoxels(level, channel, grid) as instanced cubes, seen by camera, into a rectangle of a
+     * framebuffer (cleared first); returns the number of cubes drawn.
      */
     std::size_t drawVoxelCubes(const Camera& camera, int level, VoxelChannel channel, unsigned framebuffer,
-        int x, int y, int width, int height, float exposure);
+        int x, int y, int width, int height, float exposure, int grid = 0);
     /** NaN/Inf texel counts of every float render target and voxel level (a readback per resource). */
     std::vector<NonFiniteCount> countNonFinite();
     /**
@@ -101,15 +104,21 @@ public:
      * again until it is false). Off (the default): every frame is a complete image.
      */
     void setStagedRebuilds(bool staged);
-    /** Mip levels of the radiance volume (0 before the first frame). */
+    /** Mip levels of the radiance volume (0 before the first frame); every grid of a clipmap has as many. */
     int voxelLevelCount() const;
+    /**
+     * Grids the voxels are held in: a clipmap's levels, 0 the finest (around the camera) and the last the
+     * scene's grid; 1 for a dense grid.
+     */
+    int gridCount() const;
     /** The last frame's linear radiance, read back from the GPU (top row first). */
     RadianceImage readFrame() const;
     /**
      * Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission",
-     * "radiance", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels 1..N).
+     * "radiance", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels 1..N); of
+     * grid @p grid (gridCount()).
      */
-    std::vector<float> readVoxels(const std::string& channel, int level, int& size) const;
+    std::vector<float> readVoxels(const std::string& channel, int level, int& size, int grid = 0) const;
 
     const Scene& scene() const;
     /** Grid placement in use (valid after the first frame): a clipmap's finest level, which follows the

@@ -166,13 +166,13 @@ void ViewportWidget::paintGL()
         m_renderer->present(
             defaultFramebufferObject(), trace.x(), trace.y(), trace.width(), trace.height(), exposure);
         m_levelCount = m_renderer->voxelLevelCount();
+        m_gridCount = m_renderer->gridCount();
         if (m_inspector.enabled) {
             const QRect right = inspectorRect();
-            const int level = std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1));
-            m_lastCubeCount = m_renderer->drawVoxelCubes(m_document->state().camera, level,
+            m_lastCubeCount = m_renderer->drawVoxelCubes(m_document->state().camera, inspectedLevel(),
                 m_inspector.channel, defaultFramebufferObject(), right.x(), right.y(), right.width(),
-                right.height(), exposure);
-            emit cubesDrawn(int(m_lastCubeCount), m_levelCount);
+                right.height(), exposure, inspectedGrid());
+            emit cubesDrawn(int(m_lastCubeCount), m_levelCount, m_gridCount);
         }
         if (m_nonFiniteCheck) {
             // A readback, so only while asked for; the label changes after this paint, not inside it.
@@ -228,6 +228,16 @@ QStringList ViewportWidget::reloadShaders(const QString& folder)
     for (const std::string& failure : failures)
         result << QString::fromStdString(failure);
     return result;
+}
+
+int ViewportWidget::inspectedLevel() const
+{
+    return std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1));
+}
+
+int ViewportWidget::inspectedGrid() const
+{
+    return std::clamp(m_inspector.grid, 0, std::max(0, m_gridCount - 1));
 }
 
 std::size_t ViewportWidget::occupiedVoxelCount()
@@ -719,8 +729,8 @@ void ViewportWidget::hoverVoxel(const QPoint& position)
         return;
     }
     makeCurrent();
-    const render::VoxelListing& listing = m_renderer->listVoxels(
-        std::clamp(m_inspector.level, 0, std::max(0, m_levelCount - 1)), m_inspector.channel);
+    const render::VoxelListing& listing
+        = m_renderer->listVoxels(inspectedLevel(), m_inspector.channel, inspectedGrid());
     doneCurrent();
     float best = std::numeric_limits<float>::max();
     const render::VoxelSample* hit = nullptr;
@@ -745,7 +755,9 @@ void ViewportWidget::hoverVoxel(const QPoint& position)
         emit voxelHovered(QString());
         return;
     }
-    emit voxelHovered(QStringLiteral("level %1 voxel (%2, %3, %4): %5 %6 %7, opacity %8")
+    const QString grid = m_gridCount > 1 ? QStringLiteral("grid %1, ").arg(listing.grid) : QString();
+    emit voxelHovered(QStringLiteral("%1level %2 voxel (%3, %4, %5): %6 %7 %8, opacity %9")
+                          .arg(grid)
                           .arg(listing.level)
                           .arg(hit->coord.x)
                           .arg(hit->coord.y)

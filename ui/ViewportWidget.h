@@ -61,6 +61,8 @@ public:
     std::size_t lastCubeCount() const { return m_lastCubeCount; }
     /** Mip levels the renderer has (0 before the first frame). */
     int voxelLevelCount() const { return m_levelCount; }
+    /** Grids the renderer holds its voxels in (a clipmap's levels; 1 for a dense grid). */
+    int voxelGridCount() const { return m_gridCount; }
     /** Voxels of level 0 whose opacity is non-zero, counted from the renderer's albedo volume. */
     std::size_t occupiedVoxelCount();
     QString lastError() const { return m_error; }
@@ -105,7 +107,7 @@ public slots:
 
 signals:
     void frameRendered(const vct::render::FrameStats& stats);
-    void cubesDrawn(int count, int levelCount);
+    void cubesDrawn(int count, int levelCount, int gridCount);
     void voxelHovered(const QString& text);
     void rendererFailed(const QString& message);
     /** Whether undoView() has a camera to go back to. */
@@ -128,6 +130,9 @@ protected:
 
 private:
     void releaseGl();
+    /** The inspector's mip level and grid, within what the renderer has. */
+    int inspectedLevel() const;
+    int inspectedGrid() const;
     void startInteraction();
     void setCamera(const render::Camera& camera);
     /** A camera change in one step (frame, reset): recorded as a gesture of its own. */
@@ -186,6 +191,7 @@ private:
     render::Camera m_knownCamera;
     std::size_t m_lastCubeCount = 0;
     int m_levelCount = 0;
+    int m_gridCount = 1;
     QString m_error;
     int m_contextGeneration = 0;
     bool m_nonFiniteCheck = false;

@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
 
@@ -19,6 +20,14 @@ VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
     m_enabled->setToolTip(
         tr("Splits the viewport: cone-traced image on the left, voxels as cubes on the right, same camera."));
     form->addRow(m_enabled);
+    m_grid = new QComboBox(body);
+    m_grid->setObjectName(QStringLiteral("inspectorGridCombo"));
+    m_grid->setToolTip(
+        tr("With a clipmap (Render settings, Grids): which of its levels to show. Level 0 is the "
+           "finest, around the camera; each level out is twice as wide with cells twice as "
+           "large; the last is the grid around the whole scene."));
+    setGridCount(1);
+    form->addRow(tr("Grid"), m_grid);
     m_level = new QSlider(Qt::Horizontal, body);
     // Room for a 512^3 grid's ten levels until the renderer reports how many there are.
     m_level->setRange(0, 9);
@@ -47,19 +56,26 @@ VoxelInspectorDock::VoxelInspectorDock(QWidget* parent)
     setWidget(body);
 
     connect(m_enabled, &QCheckBox::toggled, this, &VoxelInspectorDock::emitSettings);
+    connect(m_grid, &QComboBox::currentIndexChanged, this, [this](int grid) {
+        m_wantedGrid = std::max(0, grid);
+        emitSettings();
+    });
     connect(m_level, &QSlider::valueChanged, this, &VoxelInspectorDock::emitSettings);
     connect(m_channel, &QComboBox::currentIndexChanged, this, &VoxelInspectorDock::emitSettings);
 }
 
 InspectorSettings VoxelInspectorDock::settings() const
 {
-    return { m_enabled->isChecked(), m_level->value(),
-        render::VoxelChannel(m_channel->currentData().toInt()) };
+    return { m_enabled->isChecked(), m_level->value(), render::VoxelChannel(m_channel->currentData().toInt()),
+        std::max(0, m_grid->currentIndex()) };
 }
 
 void VoxelInspectorDock::setSettings(const InspectorSettings& settings)
 {
     m_enabled->setChecked(settings.enabled);
+    m_wantedGrid = std::max(0, settings.grid);
+    if (m_wantedGrid < m_grid->count())
+        m_grid->setCurrentIndex(m_wantedGrid);
     m_level->setValue(settings.level);
     m_channel->setCurrentIndex(m_channel->findData(int(settings.channel)));
 }
@@ -75,8 +91,33 @@ void VoxelInspectorDock::setLevelCount(int levels)
     m_level->setMaximum(std::max(0, levels - 1));
 }
 
-void VoxelInspectorDock::setCubeCount(int count, int levels)
+void VoxelInspectorDock::setGridCount(int grids)
 {
+    grids = std::max(1, grids);
+    if (grids == m_grid->count())
+        return;
+    // The grid asked for where the new clipmap has it, else the finest; one settings change at the end.
+    const int current = std::max(0, m_grid->currentIndex());
+    {
+        const QSignalBlocker block(m_grid);
+        m_grid->clear();
+        if (grids == 1)
+            m_grid->addItem(tr("The scene's grid"));
+        else
+            for (int grid = 0; grid < grids; ++grid)
+                m_grid->addItem(grid == 0   ? tr("Level 0 (finest, around the camera)")
+                        : grid == grids - 1 ? tr("Level %1 (the whole scene)").arg(grid)
+                                            : tr("Level %1").arg(grid));
+        m_grid->setCurrentIndex(m_wantedGrid < grids ? m_wantedGrid : 0);
+        m_grid->setEnabled(grids > 1);
+    }
+    if (current != m_grid->currentIndex())
+        emitSettings();
+}
+
+void VoxelInspectorDock::setCubeCount(int count, int levels, int grids)
+{
+    setGridCount(grids);
     setLevelCount(levels);
     m_count->setText(tr("Cubes drawn: %1").arg(count));
 }

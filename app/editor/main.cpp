@@ -63,7 +63,12 @@ int main(int argc, char** argv)
     const QCommandLineOption sizeOption(QStringLiteral("size"),
         QStringLiteral("The window's size in pixels, as WIDTHxHEIGHT (for screenshots)."),
         QStringLiteral("WxH"));
-    parser.addOptions({ screenshot, inspect, unitScaleOption, upAxisOption, sceneRootOption, sizeOption });
+    const QCommandLineOption inspectGrid(QStringLiteral("inspect-grid"),
+        QStringLiteral("With a clipmap (voxel_mode=clipmap), the voxel inspector shows its level N (0 = the "
+                       "finest, around the camera)."),
+        QStringLiteral("N"));
+    parser.addOptions(
+        { screenshot, inspect, inspectGrid, unitScaleOption, upAxisOption, sceneRootOption, sizeOption });
     parser.process(app);
 
     const QStringList scenes = parser.positionalArguments();
@@ -115,9 +120,9 @@ int main(int argc, char** argv)
     vct::ui::MainWindow window;
     window.document()->setModelRoot(sceneRoot);
     window.openInitial(scene, unitScale, upAxis);
-    if (parser.isSet(inspect))
-        window.inspectorDock()->setSettings(
-            { true, parser.value(inspect).toInt(), vct::render::VoxelChannel::Radiance });
+    if (parser.isSet(inspect) || parser.isSet(inspectGrid))
+        window.inspectorDock()->setSettings({ true, parser.value(inspect).toInt(),
+            vct::render::VoxelChannel::Radiance, parser.value(inspectGrid).toInt() });
     if (windowSize.isValid())
         window.resize(windowSize);
     window.show();

@@ -18,6 +18,7 @@ struct VoxelSample {
 
 /** The non-empty voxels of one level and channel, with where its cells sit in the world. */
 struct VoxelListing {
+    int grid = 0; ///< Which grid of a clipmap (0 = the finest); 0 for a dense grid.
     int level = 0;
     VoxelChannel channel = VoxelChannel::Radiance;
     glm::vec3 origin { 0.0f }; ///< Grid min corner, metres.

@@ -1,6 +1,7 @@
 #include "debug/VoxelInspector.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace vct::render {
 
@@ -14,7 +15,7 @@ struct GpuEntry {
 } // namespace
 
 const VoxelListing& VoxelInspector::list(
-    const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel)
+    const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel, int grid)
 {
     if (!volume.radiance)
         return m_listing = VoxelListing {};
@@ -22,9 +23,11 @@ const VoxelListing& VoxelInspector::list(
     // (made for the inspector when the volume keeps none: VoxelVolume::inspectionMips).
     const gl::Texture& radiance = volume.inspectionMips ? volume.inspectionMips : volume.coneRadiance();
     level = std::clamp(level, 0, radiance.levels() - 1);
-    const std::array<std::uint64_t, 6> key { std::uint64_t(level), std::uint64_t(channel),
-        volume.materialsVersion, volume.radianceVersion, volume.bouncedVersion,
-        std::uint64_t(volume.frame.resolution) };
+    const std::array<std::uint64_t, 10> key { std::uint64_t(grid), std::uint64_t(level),
+        std::uint64_t(channel), volume.materialsVersion, volume.radianceVersion, volume.bouncedVersion,
+        std::uint64_t(volume.frame.resolution), std::bit_cast<std::uint32_t>(volume.frame.origin.x),
+        std::bit_cast<std::uint32_t>(volume.frame.origin.y),
+        std::bit_cast<std::uint32_t>(volume.frame.origin.z) };
     if (m_valid && key == m_key)
         return m_listing;
     if (!m_compact) {
@@ -60,7 +63,7 @@ const VoxelListing& VoxelInspector::list(
     std::vector<GpuEntry> entries(count);
     if (count)
         glGetNamedBufferSubData(m_entries.id(), 0, GLsizeiptr(count * sizeof(GpuEntry)), entries.data());
-    m_listing = VoxelListing { level, channel, volume.frame.origin,
+    m_listing = VoxelListing { grid, level, channel, volume.frame.origin,
         volume.frame.voxelSize() * float(1 << level), {} };
     m_listing.samples.reserve(count);
     for (const GpuEntry& e : entries)

@@ -19,8 +19,9 @@ namespace vct::render {
  */
 class VoxelInspector {
 public:
+    /** Lists level @p level of @p volume, grid @p grid of a clipmap (0 for a dense grid). */
     const VoxelListing& list(
-        const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel);
+        const ShaderLibrary& shaders, const VoxelVolume& volume, int level, VoxelChannel channel, int grid);
     /** Draws the current list with the given view; returns how many cubes were drawn. */
     std::size_t draw(const ShaderLibrary& shaders, const glm::mat4& viewProjection, float exposure);
 
@@ -31,8 +32,9 @@ private:
     gl::Buffer m_counter;
     gl::VertexArray m_emptyVao;
     VoxelListing m_listing;
-    /// level, channel, materials version, radiance version, bounced version, resolution
-    std::array<std::uint64_t, 6> m_key {};
+    /// grid, level, channel, materials version, radiance version, bounced version, resolution, and the
+    /// grid's corner (a clip level moves with the camera)
+    std::array<std::uint64_t, 10> m_key {};
     bool m_valid = false;
 };
 

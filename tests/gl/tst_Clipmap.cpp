@@ -38,6 +38,7 @@ private slots:
     void finestLevelHoldsTheFinerGridsVoxels();
     void everyLevelIsCountedAndChecked();
     void onlyLevelsThatMoveAreRedone();
+    void inspectorShowsEachLevel();
     void slowFlightDoesNotPop();
 
 private:
@@ -204,8 +205,67 @@ void ClipmapTest::onlyLevelsThatMoveAreRedone()
     camera.lookAt.x += 3.0f * step;
     stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
     QCOMPARE(passNamed(stats, "voxelize")->action, std::string("run"));
+    qInfo("voxelize: %s, %s", passNamed(stats, "voxelize")->action.c_str(),
+        passNamed(stats, "voxelize")->reason.c_str());
     QCOMPARE(passNamed(stats, "voxelize")->reason, std::string("the grid moved with the camera"));
     QCOMPARE(passNamed(stats, "clip level 1: voxelize")->action, std::string("reused"));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// The voxel inspector looks at any level of a clipmap: each level's cubes are its own occupied voxels, twice
+// as large as the level inside it, where that level's grid is, and the list follows the grid it is asked for.
+void ClipmapTest::inspectorShowsEachLevel()
+{
+    // From the middle of the room, so that every level holds walls.
+    render::Camera camera = m_scene.camera;
+    camera.lookAt += m_scene.bounds().center() - camera.position;
+    camera.position = m_scene.bounds().center();
+    render(clipmap(3, 16), camera);
+    QCOMPARE(m_gl.renderer->gridCount(), 3);
+    const float finest = m_gl.renderer->voxelSize();
+    const render::Aabb scene = m_scene.bounds();
+    glm::vec3 innerCorner(0.0f), innerFar(0.0f);
+    float innerCell = 0.0f;
+    for (int grid = 0; grid < 3; ++grid) {
+        int size = 0;
+        const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size, grid);
+        QCOMPARE(size, 16);
+        std::size_t occupied = 0;
+        for (std::size_t i = 3; i < albedo.size(); i += 4)
+            occupied += albedo[i] > 0.0f ? 1 : 0;
+        const render::VoxelListing& listing
+            = m_gl.renderer->listVoxels(0, render::VoxelChannel::Albedo, grid);
+        QCOMPARE(listing.grid, grid);
+        QCOMPARE(listing.samples.size(), occupied);
+        QVERIFY(occupied > 0);
+        QVERIFY2(std::abs(listing.cellSize - finest * float(1 << grid)) <= 1e-5f * listing.cellSize,
+            qPrintable(QString("grid %1: cells of %2 m").arg(grid).arg(listing.cellSize)));
+        // Every cube touches the scene: the level's corner is where its voxels are.
+        for (const render::VoxelSample& sample : listing.samples) {
+            const glm::vec3 lo = listing.origin + glm::vec3(sample.coord) * listing.cellSize;
+            const glm::vec3 hi = lo + glm::vec3(listing.cellSize);
+            QVERIFY2(glm::all(glm::lessThanEqual(lo, scene.max + glm::vec3(1e-4f)))
+                    && glm::all(glm::greaterThanEqual(hi, scene.min - glm::vec3(1e-4f))),
+                qPrintable(QString("grid %1 voxel (%2, %3, %4) outside the scene")
+                               .arg(grid)
+                               .arg(sample.coord.x)
+                               .arg(sample.coord.y)
+                               .arg(sample.coord.z)));
+        }
+        // Each level holds the one inside it.
+        const glm::vec3 corner = listing.origin, far = corner + 16.0f * glm::vec3(listing.cellSize);
+        QVERIFY2(grid == 0
+                || (glm::all(glm::lessThanEqual(corner, innerCorner + 1e-4f))
+                    && glm::all(glm::greaterThanEqual(far, innerFar - 1e-4f))),
+            qPrintable(QString("grid %1 does not hold grid %2").arg(grid).arg(grid - 1)));
+        QVERIFY(grid == 0 || listing.cellSize > 1.5f * innerCell);
+        innerCorner = corner;
+        innerFar = far;
+        innerCell = listing.cellSize;
+        qInfo("grid %d: %zu cubes of %.3f m", grid, listing.samples.size(), double(listing.cellSize));
+    }
+    int unused = 0;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, m_gl.renderer->readVoxels("albedo", 0, unused, 3));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 

@@ -45,6 +45,7 @@ private slots:
     void viewportShowsAnImage();
     void emissiveFlagBrightensAndUndoRestores();
     void inspectorCountsMatchTheVoxels();
+    void inspectorShowsEachClipmapLevel();
     void clickSelectsTheObjectUnderTheCursor();
     void ctrlDragMovesTheSelectionInOneUndoStep();
     void exportWritesImages();
@@ -158,6 +159,46 @@ void EditorTest::inspectorCountsMatchTheVoxels()
         QVERIFY(count > 0);
         previous = count;
     }
+    inspector->enabledBox()->setChecked(false);
+}
+
+// With a clipmap the inspector offers each of its levels, and each shows its own cubes; back to one grid, the
+// choice goes.
+void EditorTest::inspectorShowsEachClipmapLevel()
+{
+    ui::VoxelInspectorDock* inspector = m_window->inspectorDock();
+    QComboBox* grids
+        = m_window->renderSettingsDock()->findChild<QComboBox*>(QStringLiteral("gridLevelsCombo"));
+    QVERIFY(grids);
+    QCOMPARE(inspector->gridBox()->count(), 1);
+    QVERIFY(!inspector->gridBox()->isEnabled());
+    grids->setCurrentIndex(grids->findData(2));
+    QCOMPARE(m_window->document()->state().settings.clipLevels, 2);
+    inspector->enabledBox()->setChecked(true);
+    inspector->levelSlider()->setValue(0);
+    QVERIFY(waitForFrame());
+    QVERIFY(waitForFrame()); // the first frame with the inspector on tells the panel how many grids there are
+    QCOMPARE(m_window->viewport()->voxelGridCount(), 2);
+    QCOMPARE(inspector->gridBox()->count(), 2);
+    QVERIFY(inspector->gridBox()->isEnabled());
+    std::vector<std::size_t> cubes;
+    for (int grid = 0; grid < 2; ++grid) {
+        inspector->gridBox()->setCurrentIndex(grid);
+        QCOMPARE(m_window->viewport()->inspector().grid, grid);
+        QVERIFY(waitForFrame());
+        cubes.push_back(m_window->viewport()->lastCubeCount());
+        QVERIFY2(cubes.back() > 0, qPrintable(QString("grid %1 drew no cubes").arg(grid)));
+        QVERIFY(inspector->countLabel()->text().contains(QString::number(cubes.back())));
+    }
+    // The levels are different grids: the coarser holds the whole room, the finer (cells half as wide) the
+    // part of it in front of the camera.
+    QVERIFY2(cubes[0] != cubes[1], qPrintable(QString("%1 and %2 cubes").arg(cubes[0]).arg(cubes[1])));
+    // An edit back, not an undo: later cases count the undo stack's steps.
+    grids->setCurrentIndex(grids->findData(1));
+    QCOMPARE(m_window->document()->state().settings.voxelMode, render::VoxelMode::Dense);
+    QVERIFY(waitForFrame());
+    QCOMPARE(inspector->gridBox()->count(), 1);
+    QCOMPARE(m_window->viewport()->inspector().grid, 0);
     inspector->enabledBox()->setChecked(false);
 }
 
