@@ -95,8 +95,13 @@ int BenchCommand::run(int argc, char** argv)
         QStringLiteral("plan: only the edit sequences whose name contains TEXT (say, \"fly\"), and no full "
                        "rebuild."),
         QStringLiteral("TEXT"));
+    const QCommandLineOption iterationsOption(QStringLiteral("iterations-per-frame"),
+        QStringLiteral(
+            "plan: bounce iterations a frame runs, each solve going on from the last, as the editor "
+            "does with 2 (default 0: every frame solves its bounces in full, as vct-render)."),
+        QStringLiteral("N"), QStringLiteral("0"));
     parser.addOptions({ widthOption, heightOption, voxelOption, framesOption, setOption, outOption, glOption,
-        naiveSetOption, referenceOption, previewScaleOption, sequenceOption });
+        naiveSetOption, referenceOption, previewScaleOption, sequenceOption, iterationsOption });
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -127,6 +132,9 @@ int BenchCommand::run(int argc, char** argv)
             QStringLiteral("irradiance_cache=off") };
     if (const QString problem = applySettingAssignments(naiveAssignments, naiveSettings); !problem.isEmpty())
         return fail(1, problem);
+    const int iterationsPerFrame = parser.value(iterationsOption).toInt(&ok);
+    if (!ok || iterationsPerFrame < 0 || iterationsPerFrame > 64)
+        return fail(1, QStringLiteral("--iterations-per-frame must be 0 to 64"));
     const double previewScale = parser.value(previewScaleOption).toDouble(&ok);
     if (!ok || !(previewScale > 0.0 && previewScale <= 1.0))
         return fail(1, QStringLiteral("--preview-scale must be in (0, 1]"));
@@ -176,6 +184,7 @@ int BenchCommand::run(int argc, char** argv)
         } else {
             render::Renderer renderer(context->procAddressFunction());
             renderer.setSettings(settings);
+            renderer.setBounceIterationsPerFrame(iterationsPerFrame);
             std::vector<SequenceResult> results;
             const std::string only = parser.value(sequenceOption).toStdString();
             for (const EditSequence& sequence : PlanBenchmark::standardSequences(scene)) {
@@ -193,6 +202,8 @@ int BenchCommand::run(int argc, char** argv)
                 command += " --set " + a.toStdString();
             if (!only.empty())
                 command += " --sequence \"" + only + "\"";
+            if (iterationsPerFrame > 0)
+                command += " --iterations-per-frame " + std::to_string(iterationsPerFrame);
             const std::string header = command + "` on " + context->description() + "\n\n";
             // The editor spreads bounce iterations over frames two at a time (ui/ViewportWidget).
             constexpr int kEditorIterationsPerFrame = 2;

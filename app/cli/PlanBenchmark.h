@@ -27,6 +27,8 @@ struct SequenceResult {
     double plannedWorstMs = 0.0; ///< the longest planned frame
     double forcedMs = 0.0;
     std::vector<render::PassStats> plannedPasses; ///< median ms per pass, action and reason of the last frame
+    int worstFrame = -1; ///< which planned frame was the longest (0 = the first)
+    std::vector<render::PassStats> worstFramePasses; ///< that frame's passes as they ran
 };
 
 /**
