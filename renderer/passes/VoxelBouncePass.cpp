@@ -4,6 +4,7 @@
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/ResourceNames.h"
+#include "core/VolumeShift.h"
 
 #include "bounce/BounceSums.glsl"
 
@@ -282,14 +283,22 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // converges from any start, and from the last solve it needs a frame or two, where starting over showed
     // the moving object's surroundings darker, with one or two bounces, for as long as it moved. The voxels
     // it left are cleared before the first reinjection; until then the first gather still sees them.
-    // Not across a moved grid (a clip level following the camera): the last solve's light sits elsewhere in
-    // it.
-    const bool carryOver
-        = progressive && m_iterations > 0 && (!voxelsChanged || (sameBouncedTexture && m_grid == v.frame));
+    // Across a grid that stepped by whole voxels (a clip level following the camera) the last solve moves
+    // with it first, and the slabs it did not cover start from the first-bounce light: a level that started
+    // over at each step showed, for the frames its solve took, the light of one bounce near the camera.
+    const std::optional<glm::ivec3> shift = voxelsChanged && sameBouncedTexture && m_grid != v.frame
+        ? VolumeShift::between(m_grid, v.frame)
+        : std::nullopt;
+    const bool carryOver = progressive && m_iterations > 0
+        && (!voxelsChanged || (sameBouncedTexture && (m_grid == v.frame || shift)));
     bool warm = sameSolve || carryOver;
     m_staleVoxels = warm && voxelsChanged;
     if (!warm)
         startFromFirstBounce(frame);
+    else if (carryOver && shift) {
+        VolumeShift::apply(v.bounced, v.radiance, *shift);
+        buildMips(frame);
+    }
     if (!sameSolve) {
         m_iterations = 0;
         m_residual = 0.0;
