@@ -15,9 +15,9 @@ FrameShape FrameShape::of(const FrameContext& frame)
     shape.ambientOcclusion = FrameRules::ambientOcclusionNeeded(frame);
     shape.diffuseCones = FrameRules::diffuseConesNeeded(frame);
     shape.specularCones = FrameRules::specularConesNeeded(frame);
-    // The cache's cells belong to one grid; a clipmap's pixels trace their own cones across its levels.
-    shape.irradianceCache = frame.settings.irradianceCache && shape.diffuseCones
-        && frame.coarserLevels.empty() && frame.settings.gridLevels() == 1;
+    // In a clipmap the cache's cells are the finest level's: pixels beyond it find no cell and trace their
+    // own cones across the levels. (A clip level's own pipeline has no cache.)
+    shape.irradianceCache = frame.settings.irradianceCache && shape.diffuseCones;
     shape.bounceVolume = FrameRules::bounceVolumeUsed(frame);
     shape.coneVolumeLevels = FrameRules::coneVolumeLevels(frame);
     shape.radianceLevels = FrameRules::radianceLevels(frame);

@@ -10,8 +10,13 @@ namespace vct::render {
 
 VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& frame)
 {
-    return { ConeTraceKey::of(frame), frame.settings.bounces, frame.shape.ambientOcclusion,
-        frame.settings.irradianceCellSize };
+    GatherKey key { ConeTraceKey::of(frame), frame.settings.bounces, frame.shape.ambientOcclusion,
+        frame.settings.irradianceCellSize, frame.voxels.frame, {} };
+    for (const VoxelVolume* level : frame.coarserLevels) {
+        key.coarserLight.push_back(level->radianceVersion);
+        key.coarserLight.push_back(level->bouncedVersion);
+    }
+    return key;
 }
 
 VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& frame)
@@ -25,9 +30,8 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame) const
     const VoxelVolume& v = frame.voxels;
     if (!frame.shape.irradianceCache)
         return { PassDecision::Action::Skip,
-            !frame.settings.irradianceCache       ? "irradiance cache off: cones per pixel"
-                : frame.settings.gridLevels() > 1 ? "a clipmap: cones per pixel across its levels"
-                                                  : "no diffuse light needed" };
+            !frame.settings.irradianceCache ? "irradiance cache off: cones per pixel"
+                                            : "no diffuse light needed" };
     const bool lightKept = v.irradiance && v.radianceVersion == m_radianceVersion
         && v.bouncedVersion == m_bouncedVersion && keyOf(frame) == m_key;
     if (!lightKept)

@@ -3,6 +3,7 @@
 #include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
+#include "core/VoxelGridFrame.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/VertexArray.h"
@@ -10,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <vector>
 
 namespace vct::render {
 
@@ -45,6 +47,9 @@ private:
         int bounces = 0; ///< which volume the cones trace (the bounced one, or the first-bounce light)
         bool ambientOcclusion = false;
         int cellSize = 0;
+        VoxelGridFrame grid; ///< where the cells are: a clipmap's finest level follows the camera
+        /// A clipmap's coarser levels, whose light the cones go on into: their radiance and bounced versions.
+        std::vector<std::uint64_t> coarserLight;
         bool operator==(const GatherKey& other) const = default;
     };
     static GatherKey keyOf(const FrameContext& frame);

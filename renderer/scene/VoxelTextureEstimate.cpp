@@ -64,9 +64,15 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
     }
-    // A clipmap traces every pixel's cones itself: the cache's cells belong to one grid.
-    if (settings.irradianceCache && settings.gridLevels() == 1) {
-        // The irradiance cache's cells, and which of them were gathered (r32ui).
+    // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory
+    // names them.
+    const std::size_t oneLevel = textures.size();
+    for (int level = 1; level < settings.gridLevels(); ++level)
+        for (std::size_t i = 0; i < oneLevel; ++i)
+            textures.push_back({ clipLevelName(level, textures[i].name), textures[i].bytes });
+    // The irradiance cache's cells, and which of them were gathered (r32ui): over the finest grid only (in a
+    // clipmap, pixels beyond its finest level trace their own cones).
+    if (settings.irradianceCache) {
         const std::uint64_t cells
             = std::max<std::uint64_t>(n / std::uint64_t(settings.irradianceCellSize), 1);
         textures.push_back({ "irradiance cache", chain(cells, 8, false) });
@@ -74,12 +80,6 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "irradiance cell normals", chain(cells, 4, false) });
         textures.push_back({ "irradiance cells gathered", chain(cells, 4, false) });
     }
-    // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory
-    // names them.
-    const std::size_t oneLevel = textures.size();
-    for (int level = 1; level < settings.gridLevels(); ++level)
-        for (std::size_t i = 0; i < oneLevel; ++i)
-            textures.push_back({ clipLevelName(level, textures[i].name), textures[i].bytes });
     return textures;
 }
 
