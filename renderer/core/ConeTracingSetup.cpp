@@ -64,6 +64,15 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uClipGrid", grids);
 }
 
+void ConeTracingSetup::applyCacheBand(const gl::Program& program, const FrameContext& frame)
+{
+    const VoxelGridFrame& finest = frame.voxels.frame;
+    program.set("uCacheGrid", glm::vec4(finest.origin, finest.extent));
+    program.set("uCacheScene", glm::vec4(frame.sceneGrid.origin, frame.sceneGrid.extent));
+    program.set(
+        "uCacheBand", frame.coarserLevels.empty() ? 0.0f : float(CLIP_BAND_VOXELS) * finest.voxelSize());
+}
+
 void ConeTracingSetup::addDefines(std::vector<std::string>& defines, const FrameContext& frame)
 {
     if (!frame.coarserLevels.empty())

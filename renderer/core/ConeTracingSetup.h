@@ -36,6 +36,11 @@ public:
      * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
      * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
      */
+    /**
+     * What common/CacheBand.glsl reads: in a clipmap, the finest level, the scene's grid and the band along
+     * the finest level's moving faces where pixels trace their own cones; no band for a dense grid.
+     */
+    static void applyCacheBand(const gl::Program& program, const FrameContext& frame);
     static void applyCellGather(const gl::Program& program, const FrameContext& frame, bool anisotropic,
         int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals);
 };

@@ -137,6 +137,7 @@ void ConeTracePass::execute(FrameContext& frame)
         v.irradianceBack.bindUnit(kIrradianceBackUnit);
         classify.set("uCells", v.irradiance.width());
         classify.set("uCellSize", v.frame.extent / float(v.irradiance.width()));
+        ConeTracingSetup::applyCacheBand(classify, frame);
     }
     classify.set("uGridOrigin", v.frame.origin);
     classify.set("uDiffuseEnabled", diffuse ? 1 : 0);

@@ -120,6 +120,7 @@ void VoxelIrradiancePass::requestCells(FrameContext& frame, int cells, int cellV
     request.set("uGridOrigin", v.frame.origin);
     request.set("uCellSize", v.frame.extent / float(cells));
     request.set("uCellsPerSide", cells);
+    ConeTracingSetup::applyCacheBand(request, frame);
     request.set("uDivisor", s.indirectDivisor);
     request.set("uFullSize", glm::ivec3(s.width, s.height, 0));
     s.surface.bindUnit(1);

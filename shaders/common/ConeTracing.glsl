@@ -104,25 +104,24 @@ bool insideGrid(vec3 uvw, float margin)
 #endif
 
 #ifdef CLIP_LEVELS
-// A gather within this many voxels of the faces of the finest grid holding its surface blends with the same
+// A gather within kClipBand voxels of the faces of the finest grid holding its surface blends with the same
 // gather started in the next level, fully so at the faces: as the finer levels follow the camera, a surface
 // crossing out of one goes over smoothly instead of popping.
-const float kClipBand = 4.0;
+#include "common/ClipFaces.glsl"
+const float kClipBand = float(CLIP_BAND_VOXELS);
 
 // The finest grid holding p (-1: the grid above, k: clip level k), and how far in p is: 0 at its faces, 1 from
-// kClipBand voxels in (always 1 in the coarsest level, which has nothing around it).
+// kClipBand voxels in (always 1 in the coarsest level, which has nothing around it, and at faces a level shares
+// with it).
 int startLevelOf(vec3 p, out float depth)
 {
-    vec3 lo = p - uGridOrigin, hi = uGridOrigin + vec3(uGridExtent) - p;
-    float inside = min(min(min(lo.x, lo.y), lo.z), min(min(hi.x, hi.y), hi.z));
+    float inside = insideMovingFaces(p, uGridOrigin, uGridExtent, uClipBox[CLIP_LEVELS - 1]);
     if (inside >= 0.0) {
         depth = clamp(inside / (kClipBand * uVoxelSize), 0.0, 1.0);
         return -1;
     }
     for (int k = 0; k < CLIP_LEVELS; ++k) {
-        lo = p - uClipBox[k].xyz;
-        hi = uClipBox[k].xyz + vec3(uClipBox[k].w) - p;
-        inside = min(min(min(lo.x, lo.y), lo.z), min(min(hi.x, hi.y), hi.z));
+        inside = insideMovingFaces(p, uClipBox[k].xyz, uClipBox[k].w, uClipBox[CLIP_LEVELS - 1]);
         if (inside >= 0.0 || k == CLIP_LEVELS - 1) {
             depth = k == CLIP_LEVELS - 1 ? 1.0 : clamp(inside / (kClipBand * uClipGrid[k].x), 0.0, 1.0);
             return k;

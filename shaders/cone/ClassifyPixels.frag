@@ -21,6 +21,7 @@ uniform bool uDiffuseEnabled;
 
 #if defined(IRRADIANCE_CACHE) && !defined(SPECULAR_GRID)
 #include "common/IrradianceLookup.glsl"
+#include "common/CacheBand.glsl"
 #endif
 
 #ifndef SPECULAR_GRID
@@ -47,7 +48,8 @@ void main()
     bool needsCones = geometry && uDiffuseEnabled;
 #ifdef IRRADIANCE_CACHE
     vec4 cached;
-    if (needsCones && lookUpIrradiance(uCameraPosition + fromCamera, n, cached)) {
+    vec3 p = uCameraPosition + fromCamera;
+    if (needsCones && !inCacheBand(p) && lookUpIrradiance(p, n, cached)) {
         oDiffuse = cached;
         needsCones = false;
     }

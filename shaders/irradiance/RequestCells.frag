@@ -22,6 +22,7 @@ uniform int uDivisor;    // one traced pixel stands for uDivisor x uDivisor scre
 uniform ivec3 uFullSize; // full-resolution width, height
 
 #include "common/IrradianceCells.glsl"
+#include "common/CacheBand.glsl"
 
 void main()
 {
@@ -30,6 +31,8 @@ void main()
     if (!surfaceExists(surface))
         return;
     vec3 position = uCameraPosition + surfaceFromCamera(surface, pixel);
+    if (inCacheBand(position))
+        return; // it traces its own cones
     ivec3 base;
     vec3 f;
     irradianceCellBlock(position, uGridOrigin, uCellSize, base, f);
