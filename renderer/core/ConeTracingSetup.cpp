@@ -51,17 +51,27 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     if (frame.coarserLevels.empty())
         return;
     std::vector<glm::vec4> boxes, grids;
+    clipLevelFrames(frame, boxes, grids);
     for (std::size_t k = 0; k < frame.coarserLevels.size(); ++k) {
         const VoxelVolume& level = *frame.coarserLevels[k];
-        boxes.emplace_back(level.frame.origin, level.frame.extent);
-        grids.emplace_back(level.frame.voxelSize(), float(level.frame.levelCount() - 1),
-            coneOffsetMetres(frame, level.frame), 0.0f);
         level.coneRadiance().bindUnit(GLuint(CLIP_RADIANCE_UNIT + int(k)));
         if (anisotropic)
             level.coneDirectional().bindUnit(GLuint(CLIP_TOWARDS_UNIT + int(k)));
     }
     program.set("uClipBox", boxes);
     program.set("uClipGrid", grids);
+}
+
+void ConeTracingSetup::clipLevelFrames(
+    const FrameContext& frame, std::vector<glm::vec4>& boxes, std::vector<glm::vec4>& grids)
+{
+    boxes.clear();
+    grids.clear();
+    for (const VoxelVolume* level : frame.coarserLevels) {
+        boxes.emplace_back(level->frame.origin, level->frame.extent);
+        grids.emplace_back(level->frame.voxelSize(), float(level->frame.levelCount() - 1),
+            coneOffsetMetres(frame, level->frame), 0.0f);
+    }
 }
 
 void ConeTracingSetup::applyCacheBand(const gl::Program& program, const FrameContext& frame)

@@ -41,6 +41,12 @@ public:
      * the finest level's moving faces where pixels trace their own cones; no band for a dense grid.
      */
     static void applyCacheBand(const gl::Program& program, const FrameContext& frame);
+    /**
+     * A clipmap's coarser levels as the shaders take them, finest first: per level its corner and side
+     * (@p boxes) and its voxel, top mip level and cone offset in metres (@p grids). Empty for a dense grid.
+     */
+    static void clipLevelFrames(
+        const FrameContext& frame, std::vector<glm::vec4>& boxes, std::vector<glm::vec4>& grids);
     static void applyCellGather(const gl::Program& program, const FrameContext& frame, bool anisotropic,
         int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals);
 };

@@ -1,5 +1,6 @@
 #include "core/LightUniforms.h"
 
+#include "core/ConeTracingSetup.h"
 #include "core/FrameContext.h"
 
 #include <glm/geometric.hpp>
@@ -94,9 +95,7 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
 
 void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame)
 {
-    // A clipmap's shadow cones trace its coarsest level, which holds the whole scene: the finer levels end
-    // a few metres out, and an occluder beyond them would cast nothing.
-    const VoxelVolume& v = frame.coarserLevels.empty() ? frame.voxels : *frame.coarserLevels.back();
+    const VoxelVolume& v = frame.voxels;
     program.set("uOpacityOrigin", v.frame.origin);
     program.set("uOpacityExtent", v.frame.extent);
     program.set("uOpacityVoxel", v.frame.voxelSize());
@@ -104,6 +103,24 @@ void applyAreaLightUniforms(const gl::Program& program, const FrameContext& fram
     frame.scene.bindAreaLightTable(kAreaLightTableUnit);
     if (v.opacity)
         v.opacity.bindUnit(kOpacityUnit);
+    // A clipmap's shadow cones start in the finest grid holding the receiver and go on into the coarser
+    // levels (the finer ones end a few metres out, and an occluder beyond them must still cast a shadow).
+    if (frame.coarserLevels.empty())
+        return;
+    // The opacity chains have the levels' mip counts (InjectLightPass), as the radiance's.
+    std::vector<glm::vec4> boxes, grids;
+    ConeTracingSetup::clipLevelFrames(frame, boxes, grids);
+    for (std::size_t k = 0; k < frame.coarserLevels.size(); ++k)
+        if (frame.coarserLevels[k]->opacity)
+            frame.coarserLevels[k]->opacity.bindUnit(GLuint(CLIP_RADIANCE_UNIT + int(k)));
+    program.set("uClipOpacityBox", boxes);
+    program.set("uClipOpacityGrid", grids);
+}
+
+void addAreaShadowDefines(std::vector<std::string>& defines, const FrameContext& frame)
+{
+    if (!frame.coarserLevels.empty())
+        defines.push_back("SHADOW_CLIP_LEVELS " + std::to_string(frame.coarserLevels.size()));
 }
 
 } // namespace vct::render

@@ -33,8 +33,11 @@ void applyLightUniforms(const gl::Program& program, const Scene& scene, const Sh
 struct FrameContext;
 /**
  * Sets the uniforms and binds the table and the opacity volume that shaders/common/AreaLights.glsl reads
- * (the opacity volume must have been built this frame: InjectLightPass).
+ * (the opacity volume must have been built this frame: InjectLightPass), and in a clipmap the coarser
+ * levels' opacity, which shadow cones go on into.
  */
 void applyAreaLightUniforms(const gl::Program& program, const FrameContext& frame);
+/** The defines of a shader that traces area-light shadow cones (SHADOW_CLIP_LEVELS in a clipmap). */
+void addAreaShadowDefines(std::vector<std::string>& defines, const FrameContext& frame);
 
 } // namespace vct::render

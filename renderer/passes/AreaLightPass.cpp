@@ -36,9 +36,10 @@ PassDecision AreaLightPass::plan(const FrameContext& frame) const
 void AreaLightPass::execute(FrameContext& frame)
 {
     const int lights = frame.shape.areaLights;
+    std::vector<std::string> defines { "AREA_LIGHT_COUNT " + std::to_string(lights) };
+    addAreaShadowDefines(defines, frame);
     const gl::Program& program = frame.shaders.program(
-        { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" },
-            { "AREA_LIGHT_COUNT " + std::to_string(lights) } });
+        { "area-light shadows", { "common/FullScreen.vert", "composite/AreaShadows.frag" }, defines });
     if (!m_emptyVao)
         m_emptyVao = gl::VertexArray::create();
     ScreenTargets& s = frame.screen;

@@ -180,6 +180,7 @@ void InjectLightPass::execute(FrameContext& frame)
         "AREA_LIGHT_COUNT " + std::to_string(areas) };
     if (softShadowsUsed(scene))
         defines.emplace_back("SOFT_SHADOWS");
+    addAreaShadowDefines(defines, frame);
     const gl::Program& program
         = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" }, std::move(defines) });
     if (areas > 0)

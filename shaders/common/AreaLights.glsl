@@ -18,6 +18,15 @@ uniform vec3 uOpacityOrigin;   // the voxel grid's corner, metres
 uniform float uOpacityExtent;  // its side, metres
 uniform float uOpacityVoxel;   // one voxel, metres
 uniform float uOpacityMaxLevel;
+#ifdef SHADOW_CLIP_LEVELS
+// A clipmap's levels coarser than the grid above (core/ClipLevelPass), finest first: a shadow cone goes on
+// into the next level before a lookup reaches past a grid, as the light's cones do (common/ConeTracing.glsl).
+// They share the units of the coarser levels' radiance, which no shader that traces shadow cones samples.
+layout(binding = CLIP_RADIANCE_UNIT) uniform sampler3D uClipOpacity[SHADOW_CLIP_LEVELS];
+uniform vec4 uClipOpacityBox[SHADOW_CLIP_LEVELS];  // xyz: the level's corner, w: its side (metres)
+// x: its voxel (metres), y: its top mip level, z: how far out its shadow cones start (metres)
+uniform vec4 uClipOpacityGrid[SHADOW_CLIP_LEVELS];
+#endif
 
 const float kAreaPi = 3.14159265358979;
 // The widest visibility cone: a light close by subtends a wide angle, and a cone wider than this starts
@@ -66,6 +75,39 @@ float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
     return 0.5 * abs(sum);
 }
 
+// Steps a shadow cone (see coneTransmittance) through one grid's opacity `opacity` (corner and side in box,
+// voxel and top level in grid) from distance t on. True when the cone is done: at the light, opaque, or at the
+// faces of a grid with nothing around it (margin 0); false when a lookup would reach past the grid's faces by
+// `margin` footprints, to go on in the next level.
+bool traceOpacity(sampler3D opacity, vec4 box, vec2 grid, float margin, vec3 p, vec3 dir, float tanHalf,
+    float offset, float cosReceiver, float end, float cosLight, inout float t, inout float alpha)
+{
+    float voxel = grid.x;
+    // A cone that starts in this grid starts half a voxel out, as in a grid of its own.
+    t = max(t, 0.5 * voxel);
+    for (int k = 0; k < 128 && alpha < 0.99; ++k) {
+        // At the light when its own side leaves no room; near the receiver the footprint only stays small
+        // (ending there too took a start offset under a voxel, a clip level's coarser voxels, for the light).
+        float lightSide = (end - t) * cosLight / 3.0;
+        if (lightSide < 0.5 * voxel)
+            return true;
+        float clearance = min((offset + t * cosReceiver) / 3.0, lightSide);
+        float diameter = clamp(2.0 * t * tanHalf, voxel, max(clearance, voxel));
+        float level = clamp(log2(diameter / voxel), 0.0, grid.y);
+        vec3 uvw = (p + t * dir - box.xyz) / box.w;
+        float m = margin * diameter / box.w;
+        if (any(lessThan(uvw, vec3(m))) || any(greaterThan(uvw, vec3(1.0 - m))))
+            return margin == 0.0;
+        // Level 0 holds the same opacity in every channel; above, the three axes' crossings weighted by how
+        // much of the path runs along each.
+        float a = dot(textureLod(opacity, uvw, level).rgb, dir * dir);
+        a = 1.0 - pow(clamp(1.0 - a, 0.0, 1.0), diameter / (voxel * exp2(level)));
+        alpha += (1.0 - alpha) * a;
+        t += diameter;
+    }
+    return true;
+}
+
 // Transmittance along one cone from p (already `offset` along the receiver's normal n) in direction dir, of
 // tangent half-angle tanHalf, up to the light: to its plane when it is planar (plane.w > 0.5 in `planar`), else to
 // its bounding sphere. Each sample's footprint is kept clear of the receiver's tangent plane and of the light's
@@ -84,23 +126,19 @@ float coneTransmittance(vec3 p, vec3 dir, float tanHalf, vec3 n, float offset, v
         end = length(sphere.xyz - p) - sphere.w;
     }
     float alpha = 0.0;
-    float t = 0.5 * uOpacityVoxel;
-    for (int k = 0; k < 128 && alpha < 0.99; ++k) {
-        float clearance = min(offset + t * cosReceiver, (end - t) * cosLight) / 3.0;
-        if (clearance < 0.5 * uOpacityVoxel)
-            break; // at the light
-        float diameter = clamp(2.0 * t * tanHalf, uOpacityVoxel, max(clearance, uOpacityVoxel));
-        float level = clamp(log2(diameter / uOpacityVoxel), 0.0, uOpacityMaxLevel);
-        vec3 uvw = (p + t * dir - uOpacityOrigin) / uOpacityExtent;
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
-            break;
-        // Level 0 holds the same opacity in every channel; above, the three axes' crossings weighted by how
-        // much of the path runs along each.
-        float a = dot(textureLod(uOpacity, uvw, level).rgb, dir * dir);
-        a = 1.0 - pow(clamp(1.0 - a, 0.0, 1.0), diameter / (uOpacityVoxel * exp2(level)));
-        alpha += (1.0 - alpha) * a;
-        t += diameter;
-    }
+    float t = 0.0;
+#ifdef SHADOW_CLIP_LEVELS
+    // The grid above (in a clipmap the finest level, or a clip level's own), then each coarser level the cone
+    // reaches, the same t going on; a cone whose receiver lies outside a grid goes straight on to the next.
+    bool done = traceOpacity(uOpacity, vec4(uOpacityOrigin, uOpacityExtent), vec2(uOpacityVoxel, uOpacityMaxLevel),
+        1.0, p, dir, tanHalf, offset, cosReceiver, end, cosLight, t, alpha);
+    for (int k = 0; k < SHADOW_CLIP_LEVELS && !done; ++k)
+        done = traceOpacity(uClipOpacity[k], uClipOpacityBox[k], uClipOpacityGrid[k].xy,
+            k + 1 < SHADOW_CLIP_LEVELS ? 1.0 : 0.0, p, dir, tanHalf, offset, cosReceiver, end, cosLight, t, alpha);
+#else
+    traceOpacity(uOpacity, vec4(uOpacityOrigin, uOpacityExtent), vec2(uOpacityVoxel, uOpacityMaxLevel), 0.0, p,
+        dir, tanHalf, offset, cosReceiver, end, cosLight, t, alpha);
+#endif
     return clamp(1.0 - alpha, 0.0, 1.0);
 }
 
@@ -167,9 +205,31 @@ vec3 areaLightUnshadowed(vec3 p, vec3 n)
     return irradiance;
 }
 
-// The same without and with shadows: the visibility cones start `offset` metres along n.
+#ifdef SHADOW_CLIP_LEVELS
+// A receiver outside the grid above starts its shadow cones in the first level holding it, and as far out as
+// that level's cones start (its voxels are coarser: from the finer grid's offset the first lookups took the
+// receiver's own surface for an occluder).
+float shadowOffsetFor(vec3 p, float offset)
+{
+    vec3 uvw = (p - uOpacityOrigin) / uOpacityExtent;
+    if (all(greaterThanEqual(uvw, vec3(0.0))) && all(lessThanEqual(uvw, vec3(1.0))))
+        return offset;
+    for (int k = 0; k < SHADOW_CLIP_LEVELS - 1; ++k) {
+        uvw = (p - uClipOpacityBox[k].xyz) / uClipOpacityBox[k].w;
+        if (all(greaterThanEqual(uvw, vec3(0.0))) && all(lessThanEqual(uvw, vec3(1.0))))
+            return max(offset, uClipOpacityGrid[k].z);
+    }
+    return max(offset, uClipOpacityGrid[SHADOW_CLIP_LEVELS - 1].z);
+}
+#endif
+
+// The same without and with shadows: the visibility cones start `offset` metres along n (in a clipmap, the
+// offset of the finest level holding p if that is coarser).
 void areaLightIrradiance(vec3 p, vec3 n, float offset, out vec3 unshadowed, out vec3 shadowed)
 {
+#ifdef SHADOW_CLIP_LEVELS
+    offset = shadowOffsetFor(p, offset);
+#endif
     unshadowed = vec3(0.0);
     shadowed = vec3(0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
