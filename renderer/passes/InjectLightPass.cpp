@@ -181,6 +181,7 @@ void InjectLightPass::execute(FrameContext& frame)
     if (softShadowsUsed(scene))
         defines.emplace_back("SOFT_SHADOWS");
     addAreaShadowDefines(defines, frame);
+    defines.emplace_back("ONE_SHADOW_CONE"); // common/AreaLights.glsl: one shadow cone per light and voxel
     const gl::Program& program
         = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" }, std::move(defines) });
     if (areas > 0)

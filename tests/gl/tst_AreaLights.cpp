@@ -165,8 +165,9 @@ void AreaLightsTest::penumbraFollowsThePathTracer()
 }
 
 // The light injected into the voxels (what bounces) has the blocker's shadow too: the floor's voxels under
-// its centre get a small share of the unshadowed light (the path tracer's floor there 16%, the pixels' cones
-// 26%, these voxels 36%: bound 45%), and voxels beyond the shadow the closed form's. The injection's shadow
+// its centre get a small share of the unshadowed light (the path tracer's floor there 16%, the pixels' four
+// cones 26%, the voxels' one cone 16%, four cones 36%: bound 30%), and voxels beyond the shadow the closed
+// form's. The injection's shadow
 // cones start one voxel out; they used to stop at once, taking the start's nearness to the receiver for
 // arrival at the light, and every voxel was lit as if nothing stood in the way (100%).
 void AreaLightsTest::voxelsAreShadowedToo()
@@ -200,7 +201,7 @@ void AreaLightsTest::voxelsAreShadowedToo()
     qInfo("floor voxels: %.1f%% of the unshadowed light under the blocker, within %.1f%% of the closed form "
           "beyond its shadow",
         100.0 * umbra, 100.0 * worstOutside);
-    QVERIFY2(umbra <= 0.45, qPrintable(QString::number(umbra)));
+    QVERIFY2(umbra <= 0.3, qPrintable(QString::number(umbra)));
     QVERIFY2(worstOutside <= 0.1, qPrintable(QString::number(worstOutside)));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
