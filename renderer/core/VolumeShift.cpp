@@ -2,6 +2,7 @@
 
 #include "gl/Texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 

@@ -285,7 +285,8 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // it left are cleared before the first reinjection; until then the first gather still sees them.
     // Across a grid that stepped by whole voxels (a clip level following the camera) the last solve moves
     // with it first, and the slabs it did not cover start from the first-bounce light: a level that started
-    // over at each step showed, for the frames its solve took, the light of one bounce near the camera.
+    // over at each step showed fewer bounces near the camera for the frames its solve took, and the solve ran
+    // in most frames of a flight.
     const std::optional<glm::ivec3> shift = voxelsChanged && sameBouncedTexture && m_grid != v.frame
         ? VolumeShift::between(m_grid, v.frame)
         : std::nullopt;
