@@ -432,7 +432,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     stats.voxelSize = st.voxels.frame.voxelSize();
     stats.bounceIterations = st.voxels.bounceProgress.iterations;
     stats.bounceResidual = st.voxels.bounceProgress.residual;
+    // In a clipmap the light has converged when every level's solve has (a finer level's also waits for the
+    // coarser ones', whose light it gathers: VoxelBouncePass).
     stats.lightConverged = st.voxels.bounceProgress.converged;
+    for (const ClipLevelPass* level : st.clipLevels)
+        stats.lightConverged = stats.lightConverged && level->volume().bounceProgress.converged;
     stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
     return stats;
 }

@@ -18,8 +18,14 @@ namespace vct::render {
 VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    return { ConeTraceKey::of(frame), s.bounces, std::min(s.bounceCellSize, frame.voxels.frame.resolution),
-        s.bounceTolerance, frame.voxels.materialsVersion };
+    SolveKey key { ConeTraceKey::of(frame), s.bounces,
+        std::min(s.bounceCellSize, frame.voxels.frame.resolution), s.bounceTolerance,
+        frame.voxels.materialsVersion, {} };
+    for (const VoxelVolume* level : frame.coarserLevels) {
+        key.coarserLight.push_back(level->radianceVersion);
+        key.coarserLight.push_back(level->bouncedVersion);
+    }
+    return key;
 }
 
 int VoxelBouncePass::iterationLimit(const FrameContext& frame)
@@ -45,6 +51,12 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame) const
         std::snprintf(
             text, sizeof text, "converging: %d iterations so far, residual %.2g", m_iterations, m_residual);
         return { PassDecision::Action::Run, text };
+    }
+    if (v.bounced && v.radianceVersion == m_radianceVersion) {
+        SolveKey key = keyOf(frame);
+        key.coarserLight = m_key.coarserLight;
+        if (key == m_key)
+            return { PassDecision::Action::Run, "a coarser level's light changed" };
     }
     return { PassDecision::Action::Run,
         v.bounced ? "first-bounce radiance or a bounce setting changed" : "no valid output yet" };

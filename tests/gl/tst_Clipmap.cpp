@@ -49,6 +49,7 @@ private slots:
     void dynamicObjectMovesInEveryLevel();
     void slowFlightDoesNotPop();
     void interactiveFlightKeepsTheLightAcrossSteps();
+    void interactiveSolveWaitsForTheCoarserLevels();
     void volumeShiftMovesWhatTheGridsShare();
 
 private:
@@ -541,6 +542,62 @@ void ClipmapTest::interactiveFlightKeepsTheLightAcrossSteps()
         qPrintable(QString::number(stepLight / solvedLight)));
     QVERIFY2(framesToSolve <= 2, qPrintable(QString::number(framesToSolve)));
     QVERIFY2(error <= 1e-4, qPrintable(QString::number(error)));
+    QVERIFY(m_gl.renderer->takeGlErrors().empty());
+}
+
+// In an interactive view every level's solve goes on over frames after a light edit, the coarser ones too; a
+// finer level gathers their light for its far field, so its solve goes on while theirs does, and the light
+// has converged when every level's has. Then each level's light is within the solve's tolerance (1%) of a
+// frame solved in full: measured 0.03% and 0.7% after 6 frames. Before, the view said so after 2 frames,
+// judging by the finest level alone, while the coarsest was still 16% over (the light had been halved).
+void ClipmapTest::interactiveSolveWaitsForTheCoarserLevels()
+{
+    render::Camera camera = m_scene.camera;
+    camera.position = glm::vec3(0.0f, 0.0f, 0.6f);
+    camera.lookAt = glm::vec3(0.0f, -0.3f, -1.0f);
+    m_gl.renderer->setSettings(clipmap(3, 32));
+    m_gl.renderer->setBounceIterationsPerFrame(1);
+    render::FrameStats stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    for (int frame = 0; frame < 60 && !stats.lightConverged; ++frame)
+        stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    QVERIFY(stats.lightConverged);
+    // The light dims to a half: every level's first-bounce light changes, and each solve starts from its
+    // last.
+    std::vector<render::PointLight> points = m_scene.pointLights;
+    for (render::PointLight& light : points)
+        light.intensity *= 0.5f;
+    m_gl.renderer->setLights(points, m_scene.directionalLights, m_scene.surfaceLights);
+    int frames = 0;
+    stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    for (; frames < 60 && !stats.lightConverged; ++frames)
+        stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
+    QVERIFY(stats.lightConverged);
+    const auto levelLight = [&](int grid) {
+        int size = 0;
+        double sum = 0.0;
+        const std::vector<float> bounced = m_gl.renderer->readVoxels("bounced", 0, size, grid);
+        for (std::size_t i = 0; i < bounced.size(); i += 4)
+            sum += double(bounced[i]) + double(bounced[i + 1]) + double(bounced[i + 2]);
+        return sum;
+    };
+    std::vector<double> interactive;
+    for (int grid = 0; grid < 3; ++grid)
+        interactive.push_back(levelLight(grid));
+    m_gl.renderer->setBounceIterationsPerFrame(0);
+    m_gl.renderer->invalidate();
+    m_gl.renderer->renderFrame(camera, kSize, kSize);
+    m_gl.renderer->setLights(m_scene.pointLights, m_scene.directionalLights, m_scene.surfaceLights);
+    double worst = 0.0;
+    for (int grid = 0; grid < 3; ++grid) {
+        const double solved = levelLight(grid);
+        if (solved <= 0.0 && interactive[std::size_t(grid)] <= 0.0)
+            continue; // a level with no surface in it
+        const double ratio = interactive[std::size_t(grid)] / solved;
+        qInfo("grid %d: light %.4f of a frame solved in full", grid, ratio);
+        worst = std::max(worst, std::abs(ratio - 1.0));
+    }
+    qInfo("converged %d frames after the edit", frames + 1);
+    QVERIFY2(worst <= 0.01, qPrintable(QString::number(worst)));
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
 
