@@ -86,8 +86,9 @@ bool traceOpacity(sampler3D opacity, vec4 box, vec2 grid, float margin, vec3 p, 
     // A cone that starts in this grid starts half a voxel out, as in a grid of its own.
     t = max(t, 0.5 * voxel);
     for (int k = 0; k < 128 && alpha < 0.99; ++k) {
-        // At the light when its own side leaves no room; near the receiver the footprint only stays small
-        // (ending there too took a start offset under a voxel, a clip level's coarser voxels, for the light).
+        // Done when the light's side leaves no room; near the receiver the footprint only stays small.
+        // Ending there too ended every cone that starts under 1.5 voxels out at its first step: the voxels'
+        // injection (one voxel out) and a clip level's coarser voxels had no area-light shadows.
         float lightSide = (end - t) * cosLight / 3.0;
         if (lightSide < 0.5 * voxel)
             return true;
