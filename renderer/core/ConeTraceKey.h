@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 namespace vct::render {
 
 struct FrameContext;
@@ -16,6 +19,9 @@ struct ConeTraceKey {
     float step = 0.0f;
     float maxDistance = 0.0f;
     float coneOffset = 0.0f;
+    /// A clipmap's coarser levels, which the cones go on into: their radiance and bounced versions, so that
+    /// what a finer level gathered is redone when their light changes.
+    std::vector<std::uint64_t> coarserLight;
 
     static ConeTraceKey of(const FrameContext& frame);
     bool operator==(const ConeTraceKey& other) const = default;

@@ -104,8 +104,13 @@ float ConeTracingSetup::coneOffsetMetres(const FrameContext& frame, const VoxelG
 ConeTraceKey ConeTraceKey::of(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    return { s.anisotropicMips, s.diffuseConeCount, frame.voxels.frame.resolution, s.diffuseApertureDeg,
-        s.stepFactor, s.maxDistance, s.coneOffsetVoxels };
+    ConeTraceKey key { s.anisotropicMips, s.diffuseConeCount, frame.voxels.frame.resolution,
+        s.diffuseApertureDeg, s.stepFactor, s.maxDistance, s.coneOffsetVoxels, {} };
+    for (const VoxelVolume* level : frame.coarserLevels) {
+        key.coarserLight.push_back(level->radianceVersion);
+        key.coarserLight.push_back(level->bouncedVersion);
+    }
+    return key;
 }
 
 void ConeTracingSetup::applyCellGather(const gl::Program& program, const FrameContext& frame,

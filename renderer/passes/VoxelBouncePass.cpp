@@ -18,14 +18,10 @@ namespace vct::render {
 VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
-    SolveKey key { ConeTraceKey::of(frame), s.bounces,
-        std::min(s.bounceCellSize, frame.voxels.frame.resolution), s.bounceTolerance,
-        frame.voxels.materialsVersion, {} };
-    for (const VoxelVolume* level : frame.coarserLevels) {
-        key.coarserLight.push_back(level->radianceVersion);
-        key.coarserLight.push_back(level->bouncedVersion);
-    }
-    return key;
+    // The cones' key holds a clipmap's coarser levels' light: a level solved against a coarser level's light
+    // still converging (an interactive view after a light edit) goes on when that light changes.
+    return { ConeTraceKey::of(frame), s.bounces, std::min(s.bounceCellSize, frame.voxels.frame.resolution),
+        s.bounceTolerance, frame.voxels.materialsVersion };
 }
 
 int VoxelBouncePass::iterationLimit(const FrameContext& frame)
@@ -54,7 +50,7 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame) const
     }
     if (v.bounced && v.radianceVersion == m_radianceVersion) {
         SolveKey key = keyOf(frame);
-        key.coarserLight = m_key.coarserLight;
+        key.cones.coarserLight = m_key.cones.coarserLight;
         if (key == m_key)
             return { PassDecision::Action::Run, "a coarser level's light changed" };
     }

@@ -47,10 +47,6 @@ private:
         int bounces = 0, cellSize = 0;
         float tolerance = 0.0f;
         std::uint64_t materials = 0;
-        /// A clipmap's coarser levels, whose solved light the gathers go on into: their radiance and bounced
-        /// versions. Without them a level solved against a coarser level's light still converging (an
-        /// interactive view after a light edit) kept that light's shortfall until its next change.
-        std::vector<std::uint64_t> coarserLight;
         bool operator==(const SolveKey& other) const = default;
     };
     static SolveKey keyOf(const FrameContext& frame);

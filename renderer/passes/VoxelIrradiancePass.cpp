@@ -10,13 +10,8 @@ namespace vct::render {
 
 VoxelIrradiancePass::GatherKey VoxelIrradiancePass::keyOf(const FrameContext& frame)
 {
-    GatherKey key { ConeTraceKey::of(frame), frame.settings.bounces, frame.shape.ambientOcclusion,
-        frame.settings.irradianceCellSize, frame.voxels.frame, {} };
-    for (const VoxelVolume* level : frame.coarserLevels) {
-        key.coarserLight.push_back(level->radianceVersion);
-        key.coarserLight.push_back(level->bouncedVersion);
-    }
-    return key;
+    return { ConeTraceKey::of(frame), frame.settings.bounces, frame.shape.ambientOcclusion,
+        frame.settings.irradianceCellSize, frame.voxels.frame };
 }
 
 VoxelIrradiancePass::ViewKey VoxelIrradiancePass::viewOf(const FrameContext& frame)

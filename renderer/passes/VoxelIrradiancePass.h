@@ -48,8 +48,6 @@ private:
         bool ambientOcclusion = false;
         int cellSize = 0;
         VoxelGridFrame grid; ///< where the cells are: a clipmap's finest level follows the camera
-        /// A clipmap's coarser levels, whose light the cones go on into: their radiance and bounced versions.
-        std::vector<std::uint64_t> coarserLight;
         bool operator==(const GatherKey& other) const = default;
     };
     static GatherKey keyOf(const FrameContext& frame);

@@ -55,6 +55,8 @@ private slots:
 private:
     render::RadianceImage render(const render::RenderSettings& settings, const render::Camera& camera);
     render::RenderSettings clipmap(int levels, int resolution) const;
+    /** The sum of grid @p grid's bounced light over its voxels (r + g + b). */
+    double levelLight(int grid) const;
     test::GlTestContext m_gl;
     render::Scene m_scene;
 };
@@ -77,6 +79,16 @@ render::RenderSettings ClipmapTest::clipmap(int levels, int resolution) const
     settings.voxelResolution = resolution;
     settings.shadowMapSize = 256;
     return settings;
+}
+
+double ClipmapTest::levelLight(int grid) const
+{
+    int size = 0;
+    double sum = 0.0;
+    const std::vector<float> bounced = m_gl.renderer->readVoxels("bounced", 0, size, grid);
+    for (std::size_t i = 0; i < bounced.size(); i += 4)
+        sum += double(bounced[i]) + double(bounced[i + 1]) + double(bounced[i + 2]);
+    return sum;
 }
 
 render::RadianceImage ClipmapTest::render(
@@ -516,15 +528,7 @@ void ClipmapTest::interactiveFlightKeepsTheLightAcrossSteps()
     QCOMPARE(passNamed(stats, "voxelize")->reason, std::string("the grid moved with the camera"));
     QCOMPARE(stats.bounceIterations, 1);
     const render::RadianceImage afterStep = m_gl.renderer->readFrame();
-    const auto levelLight = [&] {
-        int size = 0;
-        double sum = 0.0;
-        const std::vector<float> bounced = m_gl.renderer->readVoxels("bounced", 0, size);
-        for (std::size_t i = 0; i < bounced.size(); i += 4)
-            sum += double(bounced[i]) + double(bounced[i + 1]) + double(bounced[i + 2]);
-        return sum;
-    };
-    const double stepLight = levelLight();
+    const double stepLight = levelLight(0);
     int framesToSolve = 1;
     for (render::FrameStats more = stats; !more.lightConverged && framesToSolve < 20; ++framesToSolve)
         more = m_gl.renderer->renderFrame(camera, kSize, kSize);
@@ -533,7 +537,7 @@ void ClipmapTest::interactiveFlightKeepsTheLightAcrossSteps()
     m_gl.renderer->invalidate();
     m_gl.renderer->renderFrame(camera, kSize, kSize);
     const render::RadianceImage solved = m_gl.renderer->readFrame();
-    const double solvedLight = levelLight();
+    const double solvedLight = levelLight(0);
     const double error = io::ImageMetrics::relativeMse(afterStep, solved);
     qInfo("the first frame after the step: the finest level's light %.4f of the solved, the image within "
           "relative MSE %.2e of the solved one; solved %d frames after the step",
@@ -572,14 +576,6 @@ void ClipmapTest::interactiveSolveWaitsForTheCoarserLevels()
     for (; frames < 60 && !stats.lightConverged; ++frames)
         stats = m_gl.renderer->renderFrame(camera, kSize, kSize);
     QVERIFY(stats.lightConverged);
-    const auto levelLight = [&](int grid) {
-        int size = 0;
-        double sum = 0.0;
-        const std::vector<float> bounced = m_gl.renderer->readVoxels("bounced", 0, size, grid);
-        for (std::size_t i = 0; i < bounced.size(); i += 4)
-            sum += double(bounced[i]) + double(bounced[i + 1]) + double(bounced[i + 2]);
-        return sum;
-    };
     std::vector<double> interactive;
     for (int grid = 0; grid < 3; ++grid)
         interactive.push_back(levelLight(grid));
