@@ -134,11 +134,16 @@ SequenceResult PlanBenchmark::run(render::Renderer& renderer, const render::Scen
     }
     result.forcedMs = median(forcedTotals);
     for (std::size_t p = 0; !planned.empty() && p < planned.back().passes.size(); ++p) {
-        render::PassStats pass = planned.back().passes[p];
-        std::vector<double> ms;
-        for (const render::FrameStats& f : planned)
+        PlannedPass pass { planned.back().passes[p] };
+        std::vector<double> ms, whenRun;
+        for (const render::FrameStats& f : planned) {
             ms.push_back(f.passes[p].gpuMs);
-        pass.gpuMs = median(ms);
+            if (f.passes[p].action == "run")
+                whenRun.push_back(f.passes[p].gpuMs);
+        }
+        pass.stats.gpuMs = median(ms);
+        pass.runs = int(whenRun.size());
+        pass.msWhenRun = median(whenRun);
         result.plannedPasses.push_back(pass);
     }
     return result;
@@ -158,11 +163,12 @@ std::string PlanBenchmark::markdown(const std::vector<SequenceResult>& results)
     }
     for (const SequenceResult& r : results) {
         out << "\n**" << r.name
-            << "**, planned passes (median ms over the frames; action and reason of the last frame):\n\n"
-            << "| pass | action | ms | reason |\n|---|---|---|---|\n";
-        for (const render::PassStats& p : r.plannedPasses) {
-            std::snprintf(line, sizeof line, "| %s | %s | %.1f | %s |\n", p.name.c_str(), p.action.c_str(),
-                p.gpuMs, p.reason.c_str());
+            << "**, planned passes (median ms over the frames; the frames it ran in and its median ms in "
+               "them; action and reason of the last frame):\n\n"
+            << "| pass | action | ms | ran in | ms when it ran | reason |\n|---|---|---|---|---|---|\n";
+        for (const PlannedPass& p : r.plannedPasses) {
+            std::snprintf(line, sizeof line, "| %s | %s | %.1f | %d | %.1f | %s |\n", p.stats.name.c_str(),
+                p.stats.action.c_str(), p.stats.gpuMs, p.runs, p.msWhenRun, p.stats.reason.c_str());
             out << line;
         }
         // The median hides what a frame that redoes something pays (a clip level stepping with the camera).

@@ -20,13 +20,20 @@ struct EditSequence {
     std::function<void(render::Renderer&, render::Camera&, int frame)> apply;
 };
 
+/** One pass over a sequence's planned frames. */
+struct PlannedPass {
+    render::PassStats stats; ///< median ms over every frame, action and reason of the last frame
+    int runs = 0; ///< frames it ran in
+    double msWhenRun = 0.0; ///< median ms over those frames: what a frame that redoes it pays
+};
+
 /** Median GPU ms per frame of a sequence with the plan and with every pass forced, and the planned passes. */
 struct SequenceResult {
     std::string name;
     double plannedMs = 0.0; ///< median GPU ms per frame
     double plannedWorstMs = 0.0; ///< the longest planned frame
     double forcedMs = 0.0;
-    std::vector<render::PassStats> plannedPasses; ///< median ms per pass, action and reason of the last frame
+    std::vector<PlannedPass> plannedPasses;
     int worstFrame = -1; ///< which planned frame was the longest (0 = the first)
     std::vector<render::PassStats> worstFramePasses; ///< that frame's passes as they ran
 };

@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace vct::render {
@@ -74,9 +75,14 @@ struct VoxelVolume {
     gl::Texture irradianceNormal;
     gl::Texture irradianceRequested;
     std::uint64_t materialsVersion = 0; ///< Grows each time albedo/normal/emission are rewritten.
-    /// What the last rewrite touched: the whole grid, or (a dynamic object moved) its old and new region.
-    VoxelRegion changedRegion;
-    bool onlyDynamicChanged = false; ///< false after a static rebuild (changedRegion is then everything)
+    /// What the last rewrite redid: the whole grid, or some regions (around a moved object or an edited
+    /// material, the slabs a stepping grid newly covers); disjoint only in the last case.
+    std::vector<VoxelRegion> changedRegions;
+    bool partialRewrite = false; ///< false after a whole rebuild (changedRegions is then the whole grid)
+    /// The last rewrite moved the voxels the grid's old and new places share by this many voxels
+    /// (core/VolumeShift) instead of voxelizing them again: a pass whose output followed the old place moves
+    /// it the same way and redoes changedRegions only.
+    std::optional<glm::ivec3> shiftedBy;
     bool dynamicMoved = false; ///< a dynamic object moved or changed material: its shadow moved too
     Aabb dynamicBounds; ///< World bounds of the dynamic meshes now, and at the rewrite before.
     Aabb previousDynamicBounds;

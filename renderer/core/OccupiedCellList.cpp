@@ -36,6 +36,29 @@ void OccupiedCellList::reset(std::size_t capacity, unsigned binding)
     m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, binding + 1);
 }
 
+void OccupiedCellList::bindForAppending(unsigned binding) const
+{
+    m_dispatch.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
+    m_cells.bindBase(GL_SHADER_STORAGE_BUFFER, binding + 1);
+}
+
+void OccupiedCellList::assignShifted(const ShaderLibrary& shaders, const OccupiedCellList& source,
+    const glm::ivec3& shift, const VoxelRegion& kept, std::size_t capacity)
+{
+    if (!m_shiftProgram)
+        m_shiftProgram = &shaders.program({ "shift occupied cells", { "common/ShiftCells.comp" }, {} });
+    reset(capacity, 2);
+    if (!source.m_dispatch)
+        return;
+    m_shiftProgram->use();
+    m_shiftProgram->set("uShift", shift);
+    m_shiftProgram->set("uKeptLo", kept.lo);
+    m_shiftProgram->set("uKeptHi", kept.hi);
+    m_shiftProgram->set("uGroupSize", kGroupSize);
+    source.dispatchOverCells();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
 void OccupiedCellList::buildWith(const gl::Program& lister, const VoxelRegion& region)
 {
     const glm::ivec3 size = region.size();

@@ -42,6 +42,14 @@ public:
      * this way while it writes them.
      */
     void reset(std::size_t capacity, unsigned binding = 0);
+    /** Binds the list as reset() does but keeps what it holds, for a shader to add more cells to it. */
+    void bindForAppending(unsigned binding = 0) const;
+    /**
+     * Replaces the list by @p source's cells moved by -@p shift (the voxels of a grid that stepped by
+     * @p shift, core/VolumeShift), leaving out those that fall outside @p kept; room for @p capacity cells.
+     */
+    void assignShifted(const ShaderLibrary& shaders, const OccupiedCellList& source, const glm::ivec3& shift,
+        const VoxelRegion& kept, std::size_t capacity);
     /** Binds the list for the heavy shader (storage buffers 0 and 1) and dispatches it over the listed cells.
      */
     void dispatchOverCells() const;
@@ -50,6 +58,7 @@ public:
 
 private:
     const gl::Program* m_program = nullptr;
+    const gl::Program* m_shiftProgram = nullptr;
     gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the count
     gl::Buffer m_cells; ///< packed cell coordinates, 10 bits per axis
 };

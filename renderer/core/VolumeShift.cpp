@@ -26,7 +26,7 @@ std::optional<glm::ivec3> VolumeShift::between(const VoxelGridFrame& from, const
     return shift;
 }
 
-void VolumeShift::apply(const gl::Texture& volume, const gl::Texture& fill, const glm::ivec3& shift)
+void VolumeShift::apply(const gl::Texture& volume, const gl::Texture* fill, const glm::ivec3& shift)
 {
     const int size = volume.width();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -48,16 +48,53 @@ void VolumeShift::apply(const gl::Texture& volume, const gl::Texture& fill, cons
         if (d > 0) {
             for (int i = 0; i < size - d; i += thickness)
                 copySlab(volume.id(), i + d, i, std::min(thickness, size - d - i));
-            copySlab(fill.id(), size - d, size - d, d);
+            if (fill)
+                copySlab(fill->id(), size - d, size - d, d);
         } else {
             for (int end = size; end > thickness; end -= thickness) {
                 const int width = std::min(thickness, end - thickness);
                 copySlab(volume.id(), end - thickness - width, end - width, width);
             }
-            copySlab(fill.id(), 0, 0, thickness);
+            if (fill)
+                copySlab(fill->id(), 0, 0, thickness);
         }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+VoxelRegion VolumeShift::kept(const glm::ivec3& shift, int resolution)
+{
+    VoxelRegion shared = VoxelRegion::whole(resolution);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (shift[axis] > 0)
+            shared.hi[axis] = std::max(resolution - shift[axis], 0);
+        else if (shift[axis] < 0)
+            shared.lo[axis] = std::min(-shift[axis], resolution);
+    }
+    return shared;
+}
+
+std::vector<VoxelRegion> VolumeShift::newSlabs(const glm::ivec3& shift, int resolution)
+{
+    const VoxelRegion shared = kept(shift, resolution);
+    std::vector<VoxelRegion> slabs;
+    // What no slab took yet: each slab spans it on the axes not yet done, so the slabs do not overlap.
+    VoxelRegion rest = VoxelRegion::whole(resolution);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (shift[axis] == 0)
+            continue;
+        VoxelRegion slab = rest;
+        if (shift[axis] > 0) {
+            slab.lo[axis] = shared.hi[axis];
+            rest.hi[axis] = shared.hi[axis];
+        } else {
+            slab.hi[axis] = shared.lo[axis];
+            rest.lo[axis] = shared.lo[axis];
+        }
+        if (!slab.isEmpty())
+            slabs.push_back(slab);
+    }
+    return slabs;
 }
 
 } // namespace vct::render

@@ -1,10 +1,12 @@
 #pragma once
 
 #include "core/VoxelGridFrame.h"
+#include "core/VoxelRegion.h"
 
 #include <glm/vec3.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace vct::gl {
 class Texture;
@@ -27,9 +29,17 @@ struct VolumeShift {
     static std::optional<glm::ivec3> between(const VoxelGridFrame& from, const VoxelGridFrame& to);
     /**
      * Level 0 of @p volume (a cube) moved by @p shift voxels as between() gives it; the newly covered slabs
-     * copied from level 0 of @p fill, a cube of the same size and a copy-compatible format.
+     * copied from level 0 of @p fill, a cube of the same size and a copy-compatible format, or without
+     * @p fill left holding what they held (for a caller that rewrites them).
      */
-    static void apply(const gl::Texture& volume, const gl::Texture& fill, const glm::ivec3& shift);
+    static void apply(const gl::Texture& volume, const gl::Texture* fill, const glm::ivec3& shift);
+    /** The voxels of a grid of @p resolution that a move by @p shift keeps (in the new place's indices). */
+    static VoxelRegion kept(const glm::ivec3& shift, int resolution);
+    /**
+     * The rest of the grid, which a move by @p shift newly covers, as at most three disjoint slabs, one per
+     * axis that moved, each without the ones before it.
+     */
+    static std::vector<VoxelRegion> newSlabs(const glm::ivec3& shift, int resolution);
 };
 
 } // namespace vct::render

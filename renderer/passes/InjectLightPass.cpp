@@ -3,6 +3,7 @@
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/ResourceNames.h"
+#include "core/VolumeShift.h"
 
 #include <algorithm>
 #include <string>
@@ -62,26 +63,46 @@ VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const std::vector<A
 
 } // namespace
 
-VoxelRegion InjectLightPass::regionToInject(const FrameContext& frame) const
+bool InjectLightPass::keepsMovedLight(const FrameContext& frame) const
 {
     const VoxelVolume& v = frame.voxels;
-    const VoxelRegion whole = VoxelRegion::whole(v.frame.resolution);
+    if (!v.partialRewrite || !v.shiftedBy || v.radiance.serial() != m_radianceSerial)
+        return false;
+    const std::optional<glm::ivec3> step = VolumeShift::between(m_grid, v.frame);
+    return step && *step == *v.shiftedBy;
+}
+
+std::vector<VoxelRegion> InjectLightPass::regionsToInject(const FrameContext& frame) const
+{
+    const VoxelVolume& v = frame.voxels;
+    const std::vector<VoxelRegion> whole { VoxelRegion::whole(v.frame.resolution) };
     const auto key = keyOf(frame);
     // Lights, the direct and emission settings and the shadow maps' size need everything.
     // An emitter's edit changes the light everywhere its area light reaches, not only in its own voxels.
     const bool sameLights = m_key != LightKey {} && key.lightValues == m_key.lightValues
         && key.direct == m_key.direct && key.emission == m_key.emission
         && key.shadowMapSize == m_key.shadowMapSize && key.areaLights == m_key.areaLights;
-    if (!sameLights || !v.onlyDynamicChanged)
+    if (!sameLights || !v.partialRewrite)
         return whole;
-    if (!v.dynamicMoved) // a static material edit: only those voxels' own light changed
-        return v.changedRegion;
+    // A grid that stepped keeps its light where it keeps its voxels, if this pass's light followed it. Not
+    // with area lights: a voxel's shadow cone reads the level's opacity, which the step changed near the
+    // faces it had (measured on the Cornell box: slabs alone left 1.4% less light in the voxels, 7.6% of the
+    // brightest voxel's in the worst, after eight steps).
+    if (v.shiftedBy && (!keepsMovedLight(frame) || frame.shape.areaLights > 0))
+        return whole;
+    std::vector<VoxelRegion> regions = v.changedRegions;
+    if (!v.dynamicMoved) // a static material edit or a step: only those voxels' own light changed
+        return regions;
     const Scene& scene = frame.scene.scene();
     static const std::vector<AreaLight> none;
     const std::vector<AreaLight>& areaLights
         = frame.shape.areaLights > 0 ? frame.scene.areaLights().lights : none;
-    return v.changedRegion.united(shadowReach(v.dynamicBounds, scene, areaLights, v.frame, 2))
-        .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
+    // The moved object's region is the last; its shadows join it (the slabs before it stay as they are, so
+    // a voxel in both is lit twice, with the same result).
+    VoxelRegion& moved = regions.back();
+    moved = moved.united(shadowReach(v.dynamicBounds, scene, areaLights, v.frame, 2))
+                .united(shadowReach(v.previousDynamicBounds, scene, areaLights, v.frame, 2));
+    return regions;
 }
 
 PassDeclaration InjectLightPass::declare() const
@@ -106,7 +127,9 @@ std::vector<TextureSlot> InjectLightPass::textures(const FrameContext& frame)
 
 bool InjectLightPass::redoesWholeGrid(const FrameContext& frame) const
 {
-    return regionToInject(frame).size() == VoxelRegion::whole(frame.voxels.frame.resolution).size();
+    const std::vector<VoxelRegion> regions = regionsToInject(frame);
+    return regions.size() == 1
+        && regions[0].size() == VoxelRegion::whole(frame.voxels.frame.resolution).size();
 }
 
 PassDecision InjectLightPass::plan(const FrameContext& frame) const
@@ -114,11 +137,17 @@ PassDecision InjectLightPass::plan(const FrameContext& frame) const
     if (keyOf(frame) == m_key)
         return { PassDecision::Action::Reuse, "voxels, lights and shadows unchanged" };
     std::string reason = m_key == LightKey {} ? "no valid output yet" : "voxels or lights changed";
-    const VoxelRegion region = regionToInject(frame);
-    if (region.size() != VoxelRegion::whole(frame.voxels.frame.resolution).size()) {
-        const glm::ivec3 s = region.size();
-        reason = "re-injecting only the " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x"
-            + std::to_string(s.z) + " voxels that changed"
+    const std::vector<VoxelRegion> regions = regionsToInject(frame);
+    const int side = frame.voxels.frame.resolution;
+    if (regions.size() != 1 || regions[0].size() != VoxelRegion::whole(side).size()) {
+        std::size_t voxels = 0;
+        for (const VoxelRegion& region : regions) {
+            const glm::ivec3 s = region.size();
+            voxels += std::size_t(s.x) * std::size_t(s.y) * std::size_t(s.z);
+        }
+        const int percent = int(100.0 * double(voxels) / (double(side) * side * side) + 0.5);
+        reason = "re-injecting only the " + std::to_string(voxels) + " voxels (" + std::to_string(percent)
+            + "%) that changed" + (frame.voxels.shiftedBy ? ", the rest moved with the grid" : "")
             + (frame.voxels.dynamicMoved ? " or lie in the moved object's shadow" : "");
     }
     if (frame.shape.areaLights > 0)
@@ -186,27 +215,26 @@ void InjectLightPass::execute(FrameContext& frame)
         = frame.shaders.program({ "inject light", { "inject/InjectLight.comp" }, std::move(defines) });
     if (areas > 0)
         buildOpacity(frame);
-    const VoxelRegion region = regionToInject(frame);
-    m_key = keyOf(frame);
+    const std::vector<VoxelRegion> regions = regionsToInject(frame);
     VoxelVolume& v = frame.voxels;
-    if (region.isEmpty()) {
-        ++v.radianceVersion;
-        return;
-    }
-    // The region is cleared to zero radiance; the lighting then writes the occupied voxels only. Over the
-    // whole grid the voxelizer's lists name them; a smaller region is searched.
+    const bool whole
+        = regions.size() == 1 && regions[0].size() == VoxelRegion::whole(v.frame.resolution).size();
+    if (!whole && v.shiftedBy)
+        VolumeShift::apply(v.radiance, nullptr, *v.shiftedBy);
+    m_key = keyOf(frame);
+    m_grid = v.frame;
+    m_radianceSerial = v.radiance.serial();
+    // The regions are cleared to zero radiance; the lighting then writes the occupied voxels only. Over the
+    // whole grid the voxelizer's lists name them; smaller regions are searched.
     // llvmpipe (Mesa 22.3) let this dispatch sample the shadow maps before the queued depth rendering into
     // them had finished (tests/gl/tst_RenderPlan caught stale shadows after a light moved). A barrier here,
     // where they are read, replaces the glFinish the shadow pass used to end with: the voxelizer's draws can
     // be set up while the shadow faces are still being rasterised.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    const bool whole = region.size() == VoxelRegion::whole(v.frame.resolution).size();
     if (whole) {
         const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearTexImage(v.radiance.id(), 0, GL_RGBA, GL_FLOAT, zero);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    } else {
-        m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
     }
 
     program.use();
@@ -225,7 +253,14 @@ void InjectLightPass::execute(FrameContext& frame)
         for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
             voxels->dispatchOverCells();
     } else {
-        m_occupied.dispatchOverCells();
+        for (const VoxelRegion& region : regions) {
+            if (region.isEmpty())
+                continue;
+            m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
+            program.use();
+            m_occupied.dispatchOverCells();
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        }
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++v.radianceVersion;

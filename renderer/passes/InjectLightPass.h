@@ -2,6 +2,7 @@
 
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
+#include "core/VoxelGridFrame.h"
 #include "core/VoxelRegion.h"
 #include "gl/Program.h"
 
@@ -10,6 +11,7 @@
 #include <map>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 namespace vct::render {
 
@@ -26,7 +28,11 @@ public:
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     bool redoesWholeGrid(const FrameContext& frame) const override;
-    void invalidate() override { m_key = {}; }
+    void invalidate() override
+    {
+        m_key = {};
+        m_radianceSerial = 0;
+    }
 
 private:
     /** The versions the injected light depends on; all zero before the first injection. */
@@ -41,9 +47,11 @@ private:
         bool operator==(const LightKey& other) const = default;
     };
     static LightKey keyOf(const FrameContext& frame);
-    /** The voxels whose light can differ from the last injection (the whole grid unless only a dynamic object
-     * moved). */
-    VoxelRegion regionToInject(const FrameContext& frame) const;
+    /** The voxels whose light can differ from the last injection: the whole grid, or (the voxelizer redid
+     * regions only) those regions and the shadows of a moved object. */
+    std::vector<VoxelRegion> regionsToInject(const FrameContext& frame) const;
+    /** The light injected before can move with the grid (VoxelVolume::shiftedBy) and be kept. */
+    bool keepsMovedLight(const FrameContext& frame) const;
     /** Level 0 of VoxelVolume::opacity from the occupied voxels, and its mips, when the voxels changed. */
     void buildOpacity(FrameContext& frame);
     const gl::Program* m_markOpacity = nullptr;
@@ -51,6 +59,8 @@ private:
     OccupiedCellList m_occupied;
     LightKey m_key;
     std::uint64_t m_opacitySerial = 0; ///< the opacity texture last built (with VoxelVolume::opacityVersion)
+    std::uint64_t m_radianceSerial = 0; ///< the radiance texture last injected into
+    VoxelGridFrame m_grid; ///< where the grid was at the last injection
 };
 
 } // namespace vct::render

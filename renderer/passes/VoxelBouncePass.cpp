@@ -305,7 +305,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (!warm)
         startFromFirstBounce(frame);
     else if (carryOver && shift) {
-        VolumeShift::apply(v.bounced, v.radiance, *shift);
+        VolumeShift::apply(v.bounced, &v.radiance, *shift);
         buildMips(frame);
     }
     if (!sameSolve) {

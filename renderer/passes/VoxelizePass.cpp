@@ -3,6 +3,10 @@
 #include "core/FrameContext.h"
 #include "core/Frustum.h"
 #include "core/ResourceNames.h"
+#include "core/VolumeShift.h"
+
+#include <string>
+#include <utility>
 
 namespace vct::render {
 
@@ -11,7 +15,35 @@ namespace {
 // Margin around a moving object's bounds: conservative enlargement and depth spread reach one voxel out.
 constexpr int kDynamicMargin = 2;
 
+/** Where the grid sits on the lattice it steps on (Voxelize.vert): the scene grid's corner for a clip level,
+ * its own otherwise. */
+struct LatticePlacement {
+    glm::vec3 origin;
+    glm::ivec3 offset;
+};
+
+LatticePlacement latticeOf(const FrameContext& frame)
+{
+    const VoxelGridFrame& grid = frame.voxels.frame;
+    const glm::vec3 voxels = (grid.origin - frame.sceneGrid.origin) / grid.voxelSize();
+    const glm::vec3 whole = glm::round(voxels);
+    // A clip level's corner is whole voxels from the scene grid's (core/ClipmapLayout); any other grid is
+    // its own lattice.
+    if (frame.sceneGrid.extent > 0.0f && glm::all(glm::lessThan(glm::abs(voxels - whole), glm::vec3(1e-3f))))
+        return { frame.sceneGrid.origin, glm::ivec3(whole) };
+    return { grid.origin, glm::ivec3(0) };
+}
+
 } // namespace
+
+std::optional<glm::ivec3> VoxelizePass::gridStep(const FrameContext& frame) const
+{
+    // Only a grid that moved alone: any other change voxelizes the whole grid anyway.
+    if (m_grid == frame.voxels.frame || m_staticGeometry != frame.versions.staticGeometry
+        || m_conservative != frame.settings.conservativeVoxelization)
+        return std::nullopt;
+    return VolumeShift::between(m_grid, frame.voxels.frame);
+}
 
 PassDecision VoxelizePass::plan(const FrameContext& frame) const
 {
@@ -19,10 +51,17 @@ PassDecision VoxelizePass::plan(const FrameContext& frame) const
         return { PassDecision::Action::Run, "no valid output yet" };
     if (m_staticGeometry != frame.versions.staticGeometry)
         return { PassDecision::Action::Run, "static geometry or grid changed" };
-    if (!(m_grid == frame.voxels.frame))
-        return { PassDecision::Action::Run, "the grid moved with the camera" };
     if (m_conservative != frame.settings.conservativeVoxelization)
         return { PassDecision::Action::Run, "voxelization mode changed" };
+    if (!(m_grid == frame.voxels.frame)) {
+        if (const std::optional<glm::ivec3> step = gridStep(frame))
+            return { PassDecision::Action::Run,
+                "the grid stepped (" + std::to_string(step->x) + ", " + std::to_string(step->y) + ", "
+                    + std::to_string(step->z)
+                    + ") voxels with the camera: moving the voxels it keeps, voxelizing the slabs it newly "
+                      "covers" };
+        return { PassDecision::Action::Run, "the grid moved with the camera" };
+    }
     if (m_staticMaterials != frame.versions.staticMaterials)
         return { PassDecision::Action::Run,
             "a static material changed: re-voxelizing the objects that use it" };
@@ -57,9 +96,11 @@ std::vector<TextureSlot> VoxelizePass::textures(const FrameContext& frame)
 
 bool VoxelizePass::redoesWholeGrid(const FrameContext& frame) const
 {
-    // As execute() decides: a static change or a new mode rebuilds everything, anything else a region.
+    // As execute() decides: a static change or a new mode rebuilds everything, a grid that stepped the slabs
+    // it newly covers, anything else a region.
     return m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization || !(m_grid == frame.voxels.frame);
+        || m_conservative != frame.settings.conservativeVoxelization
+        || (!(m_grid == frame.voxels.frame) && !gridStep(frame));
 }
 
 void VoxelizePass::ensureResources(FrameContext& frame)
@@ -94,18 +135,23 @@ void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void VoxelizePass::accumulate(
-    FrameContext& frame, MeshFilter layer, const VoxelRegion& region, OccupiedCellList& touched)
+void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const VoxelRegion& region,
+    OccupiedCellList& touched, bool appendToTouched)
 {
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
     const glm::ivec3 size = region.size();
-    touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
+    if (appendToTouched)
+        touched.bindForAppending();
+    else
+        touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // Depth is clamped, not clipped: the fragment shader takes its own unclipped depth (Voxelize.geom).
+    glEnable(GL_DEPTH_CLAMP);
     const bool nvConservative = GLAD_GL_NV_conservative_raster && frame.settings.conservativeVoxelization;
     if (nvConservative)
         glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
@@ -120,11 +166,13 @@ void VoxelizePass::accumulate(
     const Aabb reach { v.frame.origin + glm::vec3(region.lo - 1) * voxel,
         v.frame.origin + glm::vec3(region.hi + 1) * voxel };
     const Frustum regionBox = Frustum::ofBox(reach);
+    const LatticePlacement lattice = latticeOf(frame);
     for (const bool emissive : { false, true }) {
         const gl::Program& program = emissive ? *m_voxelizeEmissive : *m_voxelize;
         program.use();
-        program.set("uGridOrigin", v.frame.origin);
-        program.set("uGridExtent", v.frame.extent);
+        program.set("uLatticeOrigin", lattice.origin);
+        program.set("uLatticeOffset", lattice.offset);
+        program.set("uVoxelSize", voxel);
         program.set("uResolution", res);
         program.set("uEmissionVolume", v.emission ? 1 : 0);
         program.set("uRegionLo", region.lo);
@@ -140,6 +188,7 @@ void VoxelizePass::accumulate(
     }
     if (nvConservative)
         glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    glDisable(GL_DEPTH_CLAMP);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(
@@ -161,8 +210,9 @@ void VoxelizePass::execute(FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
+    const std::optional<glm::ivec3> step = gridStep(frame);
     const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization || !(m_grid == v.frame);
+        || m_conservative != frame.settings.conservativeVoxelization || (!(m_grid == v.frame) && !step);
     const bool dynamicMoved = hasDynamic && m_dynamicVersion != frame.versions.dynamicVoxels();
     // What to redo: the whole grid after a static change; else around the static meshes whose material
     // changed, and around the moving objects, now and before a move. The region is cleared and everything in
@@ -171,15 +221,24 @@ void VoxelizePass::execute(FrameContext& frame)
     // near the region (culled by cluster, then by triangle in the geometry shader) costs less memory than
     // keeping a copy of the whole grid.
     VoxelRegion region;
+    std::vector<VoxelRegion> slabs;
     if (staticChanged) {
         region = VoxelRegion::whole(v.frame.resolution);
     } else {
+        if (step)
+            slabs = moveWithGrid(frame, *step);
         if (m_staticMaterials != frame.versions.staticMaterials)
             region = VoxelRegion::around(frame.staticMaterialEdits, v.frame, kDynamicMargin);
         if (hasDynamic)
             region = region.united(VoxelRegion::around(dynamicBounds, v.frame, kDynamicMargin));
         if (dynamicMoved)
             region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
+    }
+    // The new slabs' static voxels join the static list, which the step moved: it names every static voxel
+    // as a full rebuild's would.
+    for (const VoxelRegion& slab : slabs) {
+        clear(frame, slab);
+        accumulate(frame, MeshFilter::Static, slab, v.staticVoxels, true);
     }
     if (!region.isEmpty()) {
         clear(frame, region);
@@ -193,17 +252,40 @@ void VoxelizePass::execute(FrameContext& frame)
         if (hasDynamic)
             resolve(frame, v.dynamicVoxels);
     }
+    // Resolving marks a voxel done and is idempotent, so the moved list is resolved whole once all slabs
+    // and the region are in: a voxel resolved earlier would take no more fragments.
+    if (!slabs.empty())
+        resolve(frame, v.staticVoxels);
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
     m_conservative = frame.settings.conservativeVoxelization;
     m_grid = v.frame;
-    v.occupiedCountStale = v.occupiedCountStale || !region.isEmpty();
-    v.changedRegion = region;
-    v.onlyDynamicChanged = !staticChanged;
+    v.occupiedCountStale = v.occupiedCountStale || !region.isEmpty() || !slabs.empty();
+    v.changedRegions = slabs;
+    if (!region.isEmpty())
+        v.changedRegions.push_back(region);
+    v.partialRewrite = !staticChanged;
+    v.shiftedBy = staticChanged ? std::nullopt : step;
     v.dynamicMoved = dynamicMoved;
     v.previousDynamicBounds = v.dynamicBounds;
     v.dynamicBounds = dynamicBounds;
     m_dynamicVersion = frame.versions.dynamicVoxels();
     ++v.materialsVersion;
 }
+
+std::vector<VoxelRegion> VoxelizePass::moveWithGrid(FrameContext& frame, const glm::ivec3& step)
+{
+    // A clip level that follows the camera (core/ClipmapLayout) keeps most of its voxels at each step:
+    // copying them within their textures costs a small part of voxelizing the triangles that reach them.
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
+        if (*t)
+            VolumeShift::apply(*t, nullptr, step);
+    std::swap(v.staticVoxels, m_movedStaticVoxels);
+    v.staticVoxels.assignShifted(frame.shaders, m_movedStaticVoxels, step, VolumeShift::kept(step, res),
+        std::size_t(res) * std::size_t(res) * std::size_t(res));
+    return VolumeShift::newSlabs(step, res);
+}
+
 } // namespace vct::render

@@ -9,13 +9,16 @@
 #include "gl/Program.h"
 
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 namespace vct::render {
 
 /**
  * Rasterises the triangles into the voxel grid (dominant-axis projection in a geometry shader, conservative
  * by default) averaging albedo/opacity, normal and emission in place (common/VoxelWords.glsl). A change of
- * the static meshes rebuilds the grid; a moving object or a material edit rebuilds the region around it.
+ * the static meshes rebuilds the grid; a moving object or a material edit rebuilds the region around it; a
+ * grid that stepped with the camera moves the voxels it keeps and voxelizes the slabs it newly covers.
  */
 class VoxelizePass final : public RenderPass {
 public:
@@ -29,12 +32,17 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
+    /** How many voxels the grid stepped by since the last rewrite when that is all that changed (a clip
+     * level following the camera), or nothing. */
+    std::optional<glm::ivec3> gridStep(const FrameContext& frame) const;
+    /** Moves the voxels and the static list with a grid that stepped; returns the slabs it newly covers. */
+    std::vector<VoxelRegion> moveWithGrid(FrameContext& frame, const glm::ivec3& step);
     /** Empties the region's albedo, normal and emission, which the voxelizer then averages into. */
     void clear(FrameContext& frame, const VoxelRegion& region);
     /** Averages the fragments of one layer's meshes into the region, listing each voxel reached first into
-     * @p touched. */
-    void accumulate(
-        FrameContext& frame, MeshFilter layer, const VoxelRegion& region, OccupiedCellList& touched);
+     * @p touched, emptied first unless @p appendToTouched. */
+    void accumulate(FrameContext& frame, MeshFilter layer, const VoxelRegion& region,
+        OccupiedCellList& touched, bool appendToTouched = false);
     /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
     void resolve(FrameContext& frame, const OccupiedCellList& touched);
 
@@ -43,6 +51,7 @@ private:
         = nullptr; ///< the EMISSIVE variant, for meshes whose material emits
     const gl::Program* m_resolve = nullptr;
     OccupiedCellList m_regionStaticVoxels; ///< the static voxels a partial update redid
+    OccupiedCellList m_movedStaticVoxels; ///< the static list before a step, read while it is moved
     gl::Framebuffer m_framebuffer;
     std::uint64_t m_staticGeometry = 0;
     std::uint64_t m_staticMaterials = 0;

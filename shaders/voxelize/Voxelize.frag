@@ -12,6 +12,7 @@ in vec2 gUv;
 flat in int gAxis;
 flat in vec4 gPixelBounds;
 flat in float gDepthSlope;
+noperspective in float gDepth;
 
 uniform int uResolution;
 uniform bool uConservative;
@@ -98,7 +99,7 @@ void main()
     vec3 emission = vec3(0.0);
 #endif
 
-    float depth = gl_FragCoord.z * float(uResolution);
+    float depth = gDepth;
     float spread = uConservative ? gDepthSlope : 0.0;
     int first = max(int(floor(depth - spread)), 0);
     int last = min(int(floor(depth + spread)), uResolution - 1);

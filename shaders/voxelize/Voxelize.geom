@@ -19,6 +19,10 @@ out vec2 gUv;
 flat out int gAxis;
 flat out vec4 gPixelBounds; // xy min, zw max, window pixels: clips the enlarged triangle's spikes
 flat out float gDepthSlope; // voxel depth change across half a pixel in x plus half in y
+// Depth in voxels, not clipped: the pass clamps depth instead of clipping (VoxelizePass::accumulate), so a
+// triangle just beyond the grid's near or far face still reaches the outermost voxels within its depth
+// spread, as it reaches any inner voxel; gl_FragCoord.z would read the clamped depth there.
+noperspective out float gDepth;
 
 vec3 swizzleToAxis(vec3 p, int axis)
 {
@@ -75,6 +79,7 @@ void main()
     for (int i = 0; i < 3; ++i) {
         float z = p[0].z + slope.x * (q[i].x - p[0].x) + slope.y * (q[i].y - p[0].y);
         gl_Position = vec4(q[i], z, 1.0);
+        gDepth = (z * 0.5 + 0.5) * float(uResolution);
         gNormal = vNormal[i];
         gUv = vUv[i];
         gAxis = axis;
