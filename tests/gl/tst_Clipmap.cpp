@@ -669,28 +669,41 @@ void ClipmapTest::volumeShiftMovesWhatTheGridsShare()
 // level along all three axes, each level holds what a rebuild in its place holds: the same voxels, the same
 // occupied-voxel count, the same first-bounce light, the same image; with a dynamic object too, and with
 // area lights, whose light a step injects whole. The reasons say the steps were partial, so the test cannot
-// pass on a whole rebuild. Before the voxelizer took positions from the lattice's fixed corner, 818 values
-// differed after the flight (a face on a voxel boundary rounding to either side); before it clamped depth
-// instead of clipping, 48 (a grid's outermost layer missing what lay just beyond it).
+// pass on a whole rebuild. On a large model the conservative enlargement's rounding at triangle edges leaves
+// a few values a step off (the Sponza, where VCT_SCENE_ROOT holds it: 312 values of 91,226 voxels, and
+// 91,210 listed against 91,226). Before the voxelizer took positions from the lattice's fixed corner, 818
+// values differed after the flight (a face on a voxel boundary rounding to either side); before it clamped
+// depth instead of clipping, 48 (a grid's outermost layer missing what lay just beyond it).
 void ClipmapTest::steppingLevelKeepsWhatItShares()
 {
     QFETCH(QString, sceneName);
+    QFETCH(int, resolution);
     QFETCH(bool, areaLights);
     QFETCH(bool, dynamicBox);
+    QFETCH(bool, exact);
     render::Scene scene;
     QString error;
     QVERIFY2(doc::SceneLoader::load(sceneName, scene, &error), qPrintable(error));
     // A dynamic object's voxels are redone around it in every frame that voxelizes, the slabs' with them.
     for (render::Mesh& mesh : scene.meshes)
         mesh.dynamic = dynamicBox && mesh.name.rfind("shortbox", 0) == 0;
+    if (scene.pointLights.empty() && scene.directionalLights.empty() && scene.surfaceLights.empty()) {
+        render::DirectionalLight sun; // a model file without lights
+        sun.direction = glm::vec3(0.2f, -1.0f, 0.1f);
+        sun.irradiance = glm::vec3(5.0f);
+        scene.directionalLights.push_back(sun);
+    }
     m_gl.renderer->setScene(scene);
-    render::RenderSettings settings = clipmap(3, 32);
+    render::RenderSettings settings = clipmap(3, resolution);
     settings.bounces = 1; // the first-bounce light itself, not a solve carried across steps
+    // From near a lower corner diagonally through the scene, whatever its size and units.
+    const render::Aabb bounds = scene.bounds();
+    const float size = std::max({ bounds.size().x, bounds.size().y, bounds.size().z });
     render::Camera camera = scene.camera;
-    camera.position = glm::vec3(-0.6f, -0.6f, 0.6f);
-    camera.lookAt = glm::vec3(0.4f, 0.2f, -1.0f);
+    camera.position = bounds.center() + size * glm::vec3(-0.3f, -0.3f, 0.3f);
+    camera.lookAt = camera.position + glm::vec3(0.5f, 0.4f, -0.8f);
     render(settings, camera);
-    const glm::vec3 along(0.9f, 0.7f, -1.0f);
+    const glm::vec3 along = size * glm::vec3(0.45f, 0.35f, -0.5f);
     int partialVoxelize = 0, partialInject = 0, coarserSteps = 0;
     render::FrameStats stats;
     for (int frame = 0; frame < 8; ++frame) {
@@ -749,17 +762,26 @@ void ClipmapTest::steppingLevelKeepsWhatItShares()
     qInfo(
         "%d partial voxelizations (%d of the middle level), %d partial injections; %d values of %d occupied "
         "voxels differ from a rebuild, radiance by at most %.2e of the brightest voxel's, its sum by %.2e, "
-        "the "
-        "image by relative MSE %.1e",
+        "the image by relative MSE %.1e; %zu voxels listed against the rebuild's %zu",
         partialVoxelize, coarserSteps, partialInject, differing, occupied, largestLightDifference,
-        lightSum / freshLightSum - 1.0, imageDifference);
+        lightSum / freshLightSum - 1.0, imageDifference, listed, rebuiltListed);
     QVERIFY(partialVoxelize >= 3 && coarserSteps >= 1);
     // A voxel's area-light shadow cone reads the opacity the step changed: those levels are lit again whole.
     QCOMPARE(partialInject, areaLights ? 0 : partialVoxelize);
-    QCOMPARE(differing, 0);
-    QCOMPARE(listed, rebuiltListed);
-    QVERIFY2(largestLightDifference <= 1e-3, qPrintable(QString::number(largestLightDifference)));
-    QVERIFY2(imageDifference <= 1e-6, qPrintable(QString::number(imageDifference)));
+    if (exact) {
+        QCOMPARE(differing, 0);
+        QCOMPARE(listed, rebuiltListed);
+        QVERIFY2(largestLightDifference <= 1e-3, qPrintable(QString::number(largestLightDifference)));
+        QVERIFY2(imageDifference <= 1e-6, qPrintable(QString::number(imageDifference)));
+    } else {
+        // The conservative enlargement's float arithmetic is not exactly shift-invariant: at a triangle's
+        // footprint edge a fragment may fall in or out by rounding, moving a voxel's 8-bit mean by a step or,
+        // rarely, its occupancy (docs/DESIGN.md, "Clipmaps").
+        QVERIFY2(double(differing) <= 0.01 * 8.0 * double(occupied), qPrintable(QString::number(differing)));
+        QVERIFY2(std::abs(double(listed) - double(rebuiltListed)) <= 1e-3 * double(rebuiltListed),
+            qPrintable(QString("%1 against %2").arg(listed).arg(rebuiltListed)));
+        QVERIFY2(imageDifference <= 1e-6, qPrintable(QString::number(imageDifference)));
+    }
     m_gl.renderer->setScene(m_scene);
     QVERIFY(m_gl.renderer->takeGlErrors().empty());
 }
@@ -767,11 +789,18 @@ void ClipmapTest::steppingLevelKeepsWhatItShares()
 void ClipmapTest::steppingLevelKeepsWhatItShares_data()
 {
     QTest::addColumn<QString>("sceneName");
+    QTest::addColumn<int>("resolution");
     QTest::addColumn<bool>("areaLights");
     QTest::addColumn<bool>("dynamicBox");
-    QTest::newRow("point light") << QStringLiteral("builtin:cornell_point") << false << false;
-    QTest::newRow("area light") << QStringLiteral("builtin:cornell") << true << false;
-    QTest::newRow("dynamic object") << QStringLiteral("builtin:cornell_point") << false << true;
+    QTest::addColumn<bool>("exact");
+    QTest::newRow("point light") << QStringLiteral("builtin:cornell_point") << 32 << false << false << true;
+    QTest::newRow("area light") << QStringLiteral("builtin:cornell") << 32 << true << false << true;
+    QTest::newRow("dynamic object") << QStringLiteral("builtin:cornell_point") << 32 << false << true << true;
+    // The Crytek Sponza is not in the repository: where VCT_SCENE_ROOT names a folder holding it (README),
+    // its raw OBJ (centimetres, 262k triangles) is flown through too.
+    const QString sponza = qEnvironmentVariable("VCT_SCENE_ROOT") + QStringLiteral("/sponza/sponza.obj");
+    if (qEnvironmentVariableIsSet("VCT_SCENE_ROOT"))
+        QTest::newRow("Sponza") << sponza << 64 << false << false << false;
 }
 
 QTEST_GUILESS_MAIN(ClipmapTest)
