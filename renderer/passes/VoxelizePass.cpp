@@ -234,6 +234,10 @@ void VoxelizePass::execute(FrameContext& frame)
         if (dynamicMoved)
             region = region.united(VoxelRegion::around(v.dynamicBounds, v.frame, kDynamicMargin));
     }
+    // The dynamic list is made again over the region around the objects, below; a grid that stepped away from
+    // them keeps none of their voxels, and its list must not name cells by where the grid was.
+    if (step && hasDynamic && region.isEmpty())
+        v.dynamicVoxels.reset(1);
     // The new slabs' static voxels join the static list, which the step moved: it names every static voxel
     // as a full rebuild's would.
     for (const VoxelRegion& slab : slabs) {
