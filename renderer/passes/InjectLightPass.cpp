@@ -61,12 +61,18 @@ VoxelRegion shadowReach(const Aabb& box, const Scene& scene, const std::vector<A
     return VoxelRegion::around(covered, grid, margin);
 }
 
+/** Whether @p regions is the whole grid, which regionsToInject() gives as one region. */
+bool coversWholeGrid(const std::vector<VoxelRegion>& regions, int resolution)
+{
+    return regions.size() == 1 && regions[0].size() == VoxelRegion::whole(resolution).size();
+}
+
 } // namespace
 
 bool InjectLightPass::keepsMovedLight(const FrameContext& frame) const
 {
     const VoxelVolume& v = frame.voxels;
-    if (!v.partialRewrite || !v.shiftedBy || v.radiance.serial() != m_radianceSerial)
+    if (!v.shiftedBy || v.radiance.serial() != m_radianceSerial)
         return false;
     const std::optional<glm::ivec3> step = VolumeShift::between(m_grid, v.frame);
     return step && *step == *v.shiftedBy;
@@ -128,8 +134,7 @@ std::vector<TextureSlot> InjectLightPass::textures(const FrameContext& frame)
 bool InjectLightPass::redoesWholeGrid(const FrameContext& frame) const
 {
     const std::vector<VoxelRegion> regions = regionsToInject(frame);
-    return regions.size() == 1
-        && regions[0].size() == VoxelRegion::whole(frame.voxels.frame.resolution).size();
+    return coversWholeGrid(regions, frame.voxels.frame.resolution);
 }
 
 PassDecision InjectLightPass::plan(const FrameContext& frame) const
@@ -139,7 +144,7 @@ PassDecision InjectLightPass::plan(const FrameContext& frame) const
     std::string reason = m_key == LightKey {} ? "no valid output yet" : "voxels or lights changed";
     const std::vector<VoxelRegion> regions = regionsToInject(frame);
     const int side = frame.voxels.frame.resolution;
-    if (regions.size() != 1 || regions[0].size() != VoxelRegion::whole(side).size()) {
+    if (!coversWholeGrid(regions, side)) {
         std::size_t voxels = 0;
         for (const VoxelRegion& region : regions) {
             const glm::ivec3 s = region.size();
@@ -217,8 +222,7 @@ void InjectLightPass::execute(FrameContext& frame)
         buildOpacity(frame);
     const std::vector<VoxelRegion> regions = regionsToInject(frame);
     VoxelVolume& v = frame.voxels;
-    const bool whole
-        = regions.size() == 1 && regions[0].size() == VoxelRegion::whole(v.frame.resolution).size();
+    const bool whole = coversWholeGrid(regions, v.frame.resolution);
     if (!whole && v.shiftedBy)
         VolumeShift::apply(v.radiance, nullptr, *v.shiftedBy);
     m_key = keyOf(frame);
