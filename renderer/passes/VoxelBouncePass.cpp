@@ -239,14 +239,16 @@ void VoxelBouncePass::judge(const Change& change, double tolerance)
         m_lastChange = 0.0;
         return;
     }
-    // Otherwise converged when this change and those still to come, the last one times the tail q / (1 - q)
-    // (q: the ratio of two consecutive changes, none taken across an extrapolation), are under the tolerance.
+    // Otherwise converged when this change is under the tolerance and those still to come, the last one times
+    // the tail q / (1 - q) (q: the ratio of two consecutive changes, none taken across an extrapolation),
+    // under half of it: like the tail's own estimate (bounce/DecideTail.comp), q taken from two changes runs
+    // short while it still settles.
     const double q = m_lastChange > 0.0 ? change.change / m_lastChange : -1.0;
     if (q > 0.0 && q < kLargestRatio)
         m_tail = q / (1.0 - q);
     m_lastChange = change.change;
     m_done = m_iterations >= 2 && m_residual < tolerance
-        && m_residual * (m_tail > 0.0 ? m_tail : 1.0) < tolerance;
+        && m_residual * (m_tail > 0.0 ? m_tail : 1.0) < 0.5 * tolerance;
 }
 
 bool VoxelBouncePass::cellsOutdated(const VoxelVolume& v) const

@@ -48,7 +48,9 @@ void main()
         float change = sum(k - 1, BOUNCE_SUM_VOXEL_CHANGE) / sum(k - 1, BOUNCE_SUM_VOXEL_TOTAL)
             * sum(k, BOUNCE_SUM_CELL_CHANGE) / sum(k - 1, BOUNCE_SUM_CELL_CHANGE);
         error = change * abs(tail - previousTail);
-        extrapolate = error < uTolerance;
+        // Half the tolerance: the drift of two ratios underestimates the error while the ratio still settles
+        // (a room at 32^3 ended 1.04% short of its limit at an estimate of 0.63%; tst_HardCases).
+        extrapolate = error < 0.5 * uTolerance;
     }
     imageStore(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * k + BOUNCE_SUM_TAIL, 0), vec4(extrapolate ? tail : 0.0));
     imageStore(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * k + BOUNCE_SUM_TAIL_ERROR, 0), vec4(error));
