@@ -17,6 +17,7 @@ struct ConeTraceKey {
     int resolution = 0;
     float apertureDeg = 0.0f;
     float step = 0.0f;
+    bool dropBackFaces = false;
     float maxDistance = 0.0f;
     float coneOffset = 0.0f;
     /// A clipmap's coarser levels, which the cones go on into: their radiance and bounced versions, so that

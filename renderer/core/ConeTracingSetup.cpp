@@ -105,7 +105,7 @@ ConeTraceKey ConeTraceKey::of(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
     ConeTraceKey key { s.anisotropicMips, s.diffuseConeCount, frame.voxels.frame.resolution,
-        s.diffuseApertureDeg, s.stepFactor, s.maxDistance, s.coneOffsetVoxels, {} };
+        s.diffuseApertureDeg, s.stepFactor, s.dropBackFaces, s.maxDistance, s.coneOffsetVoxels, {} };
     for (const VoxelVolume* level : frame.coarserLevels) {
         key.coarserLight.push_back(level->radianceVersion);
         key.coarserLight.push_back(level->bouncedVersion);

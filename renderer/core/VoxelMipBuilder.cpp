@@ -71,14 +71,17 @@ void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume
     }
 }
 
-void VoxelMipBuilder::buildDirectional(
-    const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional)
+void VoxelMipBuilder::buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source,
+    const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional)
 {
     if (!m_directionalProgram) {
         m_directionalProgram
             = &shaders.program({ "directional downsample", { "mipmap/DownsampleDirectional.comp" }, {} });
         m_allDirectionsProgram = &shaders.program(
             { "directional downsample, first level", { "mipmap/DownsampleAllDirections.comp" }, {} });
+        m_allDirectionsDroppingBackFaces
+            = &shaders.program({ "directional downsample, first level, no back faces",
+                { "mipmap/DownsampleAllDirections.comp" }, { "DROP_BACK_FACES" } });
     }
     // The chains start at grid level 1, from the source's level 0 alone: a source without box levels will do.
     // They stop where their tiles' gaps are one texel (directionalDesc).
@@ -94,10 +97,14 @@ void VoxelMipBuilder::buildDirectional(
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         // Level 1 of every chain from the isotropic level 0, in one pass over its shared children; later
         // levels of all six chains at once, each tile from the same tile one level finer.
-        const gl::Program& filter = level == 0 ? *m_allDirectionsProgram : *m_directionalProgram;
+        const gl::Program& first
+            = backFaceNormals ? *m_allDirectionsDroppingBackFaces : *m_allDirectionsProgram;
+        const gl::Program& filter = level == 0 ? first : *m_directionalProgram;
         filter.use();
         if (level == 0) {
             source.bindUnit(0);
+            if (backFaceNormals)
+                backFaceNormals->bindUnit(1);
         } else {
             directional.bindUnit(0);
             filter.set("uSourceLevel", level - 1);

@@ -31,10 +31,12 @@ public:
     void buildBox(const ShaderLibrary& shaders, gl::Texture& volume);
     /**
      * Six chains (+x, -x, +y, -y, +z, -z; texture level k = grid level k + 1) composited front to back from
-     * level 0 of @p source into the tiles of @p directional, made as directionalDesc() says.
+     * level 0 of @p source into the tiles of @p directional, made as directionalDesc() says. With
+     * @p backFaceNormals (the voxels' normals) each chain leaves out the voxels of one-sided surfaces that
+     * face the way it travels (RenderSettings::dropBackFaces).
      */
-    void buildDirectional(
-        const ShaderLibrary& shaders, const gl::Texture& source, int resolution, gl::Texture& directional);
+    void buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source,
+        const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional);
     /**
      * The six directional chains of a grid of @p resolution: one stack of tiles from grid level 1 (texture
      * level k = grid level k + 1), laid out by scene/DirectionalStackLayout.h; empty for a grid too small.
@@ -50,6 +52,7 @@ private:
     const gl::Program* m_boxProgram = nullptr;
     const gl::Program* m_directionalProgram = nullptr;
     const gl::Program* m_allDirectionsProgram = nullptr;
+    const gl::Program* m_allDirectionsDroppingBackFaces = nullptr;
     const gl::Program* m_listParents = nullptr;
     gl::Texture
         m_listed; ///< r32ui over the cells of level 1: bit k set where the cell of level k + 1 is listed

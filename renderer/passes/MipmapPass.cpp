@@ -27,7 +27,7 @@ std::vector<TextureSlot> MipmapPass::textures(const FrameContext& frame)
 PassDecision MipmapPass::plan(const FrameContext& frame) const
 {
     if (frame.voxels.radianceVersion == m_radianceVersion && frame.settings.anisotropicMips == m_anisotropic
-        && frame.shape.bounceVolume == m_levelZeroOnly)
+        && frame.settings.dropBackFaces == m_dropBackFaces && frame.shape.bounceVolume == m_levelZeroOnly)
         return { PassDecision::Action::Reuse, "radiance unchanged" };
     if (frame.shape.bounceVolume)
         return { PassDecision::Action::Run, "level 0 only: cones trace the bounced volume's levels" };
@@ -39,13 +39,15 @@ void MipmapPass::execute(FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     m_radianceVersion = v.radianceVersion;
     m_anisotropic = frame.settings.anisotropicMips;
+    m_dropBackFaces = frame.settings.dropBackFaces;
     m_levelZeroOnly = frame.shape.bounceVolume;
     if (m_levelZeroOnly)
         return;
     m_builder.listCells(frame.shaders, v.frame.resolution, v.frame.levelCount(),
         v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
     if (frame.settings.anisotropicMips) {
-        m_builder.buildDirectional(frame.shaders, v.radiance, v.frame.resolution, v.directional);
+        m_builder.buildDirectional(frame.shaders, v.radiance,
+            frame.settings.dropBackFaces ? &v.normal : nullptr, v.frame.resolution, v.directional);
     } else {
         m_builder.buildBox(frame.shaders, v.radiance);
     }

@@ -25,6 +25,7 @@ public:
 private:
     VoxelMipBuilder m_builder;
     std::uint64_t m_radianceVersion = 0;
+    bool m_dropBackFaces = false;
     bool m_anisotropic = false;
     bool m_levelZeroOnly = false; ///< the bounce volume is in use: radiance keeps level 0 only
 };

@@ -103,7 +103,8 @@ void VoxelBouncePass::buildMips(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
     if (frame.settings.anisotropicMips)
-        m_builder.buildDirectional(frame.shaders, v.bounced, v.frame.resolution, v.bouncedDirectional);
+        m_builder.buildDirectional(frame.shaders, v.bounced,
+            frame.settings.dropBackFaces ? &v.normal : nullptr, v.frame.resolution, v.bouncedDirectional);
     else
         m_builder.buildBox(frame.shaders, v.bounced);
 }
@@ -118,7 +119,8 @@ void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
     const int res = v.frame.resolution;
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     if (frame.settings.anisotropicMips) {
-        m_builder.buildDirectional(frame.shaders, v.radiance, res, v.bouncedDirectional);
+        m_builder.buildDirectional(frame.shaders, v.radiance,
+            frame.settings.dropBackFaces ? &v.normal : nullptr, res, v.bouncedDirectional);
         return;
     }
     glCopyImageSubData(

@@ -123,6 +123,8 @@ const std::map<std::string, Field>& fields()
             &RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
         t["step"]
             = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
+        t["drop_back_faces"] = makeField(&RenderSettings::dropBackFaces,
+            "directional mips leave out surfaces facing the way a cone travels (on/off)");
         t["max_distance"]
             = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
         t["indirect_res"] = makeField(

@@ -79,6 +79,12 @@ struct RenderSettings {
     float diffuseApertureDeg = 30.0f;
     float specularApertureDeg = 15.0f; ///< Narrowest specular cone; glossier lobes are clamped to it.
     float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
+    /// The directional mips leave out voxels whose surface faces the way a cone travels (neither light nor
+    /// opacity), so a surface no longer lights and shades the cones leaving it: ceilings beside a light's hot
+    /// spot gathered twice the path tracer's light. The price: a one-sided surface with nothing behind it (a
+    /// lone quad) is see-through to cones reaching it from behind (docs/ACCURACY.md, "Back faces and the
+    /// grid's faces"). Off until the cones' other biases, which it no longer offsets, are fixed too.
+    bool dropBackFaces = false;
     float maxDistance = -1.0f; ///< Cone length in metres; negative = the grid's diagonal.
     /// Cone origins start this many voxels along the normal; on grids finer than 128^3 as far as on that grid
     /// (ConeTracingSetup::coneOffsetMetres).
