@@ -115,10 +115,10 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_balanced = new QPushButton(tr("Balanced"));
     m_balanced->setObjectName(QStringLiteral("presetBalanced"));
     m_balanced->setToolTip(
-        tr("The default: 128³ anisotropic voxels, 5 cones of 30°, indirect light at quarter resolution"));
+        tr("The default: 128³ anisotropic voxels, 7 cones of 22°, indirect light at quarter resolution"));
     m_high = new QPushButton(tr("High"));
     m_high->setObjectName(QStringLiteral("presetHigh"));
-    m_high->setToolTip(tr("Balanced with a second bounce: seconds per full frame, camera moves stay fast"));
+    m_high->setToolTip(tr("Balanced with 13 cones of 20° and a finer specular grid"));
     auto* presets = new QHBoxLayout;
     presets->setContentsMargins(0, 0, 0, 0);
     presets->addWidget(new QLabel(tr("Preset")));
@@ -151,6 +151,11 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
         tr("Six direction-dependent mip chains: thin walls stay opaque to wide cones, at three lookups per "
            "coarse sample"));
     m_anisotropic->setObjectName(QStringLiteral("anisotropicCheck"));
+    m_dropBackFaces = makeCheck(tr("Drop back faces"),
+        tr("The anisotropic mips leave out surfaces facing the way a cone travels, so a surface does not "
+           "light or shade the cones leaving it; a lone one-sided quad is see-through from behind "
+           "(drop_back_faces)"));
+    m_dropBackFaces->setObjectName(QStringLiteral("dropBackFacesCheck"));
     m_bounces = new QComboBox;
     m_bounces->setObjectName(QStringLiteral("bouncesCombo"));
     m_bounces->addItem(tr("Converged (all)"), render::RenderSettings::kConvergedBounces);
@@ -282,6 +287,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     voxelForm->addRow(tr("Grids"), m_gridLevels);
     voxelForm->addRow(m_conservative);
     voxelForm->addRow(m_anisotropic);
+    voxelForm->addRow(m_dropBackFaces);
     voxelForm->addRow(tr("Bounces"), m_bounces);
     auto* budgetRow = new QHBoxLayout;
     budgetRow->addWidget(m_budget, 1);
@@ -386,6 +392,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     };
     bindCheck(m_conservative, &render::RenderSettings::conservativeVoxelization);
     bindCheck(m_anisotropic, &render::RenderSettings::anisotropicMips);
+    bindCheck(m_dropBackFaces, &render::RenderSettings::dropBackFaces);
     bindCheck(m_irradianceCache, &render::RenderSettings::irradianceCache);
     bindCheck(m_direct, &render::RenderSettings::direct);
     bindCheck(m_indirectDiffuse, &render::RenderSettings::indirectDiffuse);
@@ -413,8 +420,9 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     // From the accuracy/time study (docs/ACCURACY.md, "Recommended defaults and presets"): only settings on
     // or next to the frontier in both the Cornell box and the atrium. Finer grids and more cones were
     // measured to cost more without lowering the error, so no preset uses them.
-    s.diffuseConeCount = 5;
-    s.diffuseApertureDeg = 30.0f;
+    s.diffuseConeCount = 7;
+    s.diffuseApertureDeg = 22.0f;
+    s.dropBackFaces = true;
     s.stepFactor = 1.0f;
     s.bounceCellSize = 4;
     switch (preset) {
@@ -422,6 +430,9 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
         // A coarse grid with isotropic mips: the cheapest full frame that is still on the frontier.
         s.voxelResolution = 64;
         s.anisotropicMips = false;
+        // Box mips leak most of what narrower cones would add: fewer, wider cones measure the same, for less.
+        s.diffuseConeCount = 5;
+        s.diffuseApertureDeg = 30.0f;
         s.bounces = 1; // box mips leak most of a gather: further bounces add little (docs/ACCURACY.md)
         s.indirectDivisor = 4;
         s.specularDivisor = 8;
@@ -435,14 +446,14 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
         s.specularDivisor = 8;
         break;
     case Preset::High:
-        // Balanced with 13 cones of 28 degrees and a finer specular grid: closer to the references of the
-        // Cornell boxes and the atrium (the Sponza unchanged) for 1.3 times the full frame. Cells of 2^3
-        // voxels for the bounce gather, High before, cost 1.5-1.7 times for no gain (docs/ACCURACY.md).
+        // Balanced with 13 cones of 20 degrees and a finer specular grid: closer to the references of the
+        // point-lit Cornell box and the atrium (docs/ACCURACY.md, "Recommended defaults and presets"). Cells
+        // of 2^3 voxels for the bounce gather, High before, cost 1.5-1.7 times for no gain.
         s.voxelResolution = 128;
         s.anisotropicMips = true;
         s.bounces = render::RenderSettings::kConvergedBounces;
         s.diffuseConeCount = 13;
-        s.diffuseApertureDeg = 28.0f;
+        s.diffuseApertureDeg = 20.0f;
         s.indirectDivisor = 4;
         // Sharp reflections of nearby edges keep more of their edge at the finer specular grid.
         s.specularDivisor = 4;
@@ -553,11 +564,11 @@ void RenderSettingsDock::load()
         return;
     const render::RenderSettings& s = m_document->state().settings;
 
-    const QList<QWidget*> editors { m_resolution, m_gridLevels, m_conservative, m_anisotropic, m_bounces,
-        m_indirectResolution, m_specularResolution, m_areaShadowResolution, m_irradianceCache,
-        m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step, m_maxDistance,
-        m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission, m_shadowMap,
-        m_exposure, m_view, m_budget, m_fast, m_balanced, m_high };
+    const QList<QWidget*> editors { m_resolution, m_gridLevels, m_conservative, m_anisotropic,
+        m_dropBackFaces, m_bounces, m_indirectResolution, m_specularResolution, m_areaShadowResolution,
+        m_irradianceCache, m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step,
+        m_maxDistance, m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission,
+        m_shadowMap, m_exposure, m_view, m_budget, m_fast, m_balanced, m_high };
     std::vector<std::unique_ptr<QSignalBlocker>> blockers;
     for (QWidget* w : editors)
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
@@ -566,6 +577,8 @@ void RenderSettingsDock::load()
     selectIntItem(m_gridLevels, s.gridLevels(), tr("Clipmap, %1 levels").arg(s.gridLevels()));
     m_conservative->setChecked(s.conservativeVoxelization);
     m_anisotropic->setChecked(s.anisotropicMips);
+    m_dropBackFaces->setChecked(s.dropBackFaces);
+    m_dropBackFaces->setEnabled(s.anisotropicMips); // only the directional chains know which way cones go
     selectIntItem(m_bounces, s.bounces, QString::number(s.bounces));
     m_irradianceCache->setChecked(s.irradianceCache);
     selectIntItem(m_irradianceCell, s.irradianceCellSize, QString::number(s.irradianceCellSize));

@@ -77,6 +77,7 @@ private:
     QComboBox* m_gridLevels = nullptr; ///< a dense grid (1) or a clipmap's levels
     QCheckBox* m_conservative = nullptr;
     QCheckBox* m_anisotropic = nullptr;
+    QCheckBox* m_dropBackFaces = nullptr;
     QComboBox* m_bounces = nullptr;
     QComboBox* m_indirectResolution = nullptr;
     QComboBox* m_specularResolution = nullptr;

@@ -71,20 +71,20 @@ struct RenderSettings {
     bool irradianceCache = true;
     /// Voxels per side of one irradiance-cache cell (1, 2 or 4): one gather per cell that holds a surface.
     int irradianceCellSize = 2;
-    int diffuseConeCount = 5; ///< 1..32; 5 = one along the normal and four tilted 45 degrees.
-    /// Full cone angle of each diffuse cone. Narrow cones reach the coarse, leaky mip levels later; 30
-    /// degrees with five cones is on the accuracy frontier at its cost. With every bounce, 13 cones of 28
-    /// degrees (the High preset) are closer to the references for 1.3 times the full frame
-    /// (docs/ACCURACY.md, "More and narrower cones").
-    float diffuseApertureDeg = 30.0f;
+    int diffuseConeCount = 7; ///< 1..32; 2..9 = one along the normal and the rest tilted 45 degrees.
+    /// Full cone angle of each diffuse cone. Wide cones gather more than the light around them where it is
+    /// uneven (a point light's hot spot on a ceiling); seven cones of 22 degrees reach the references of all
+    /// three scenes, where five of 30 read the point-lit box 12% bright once cones no longer leak through
+    /// walls (docs/ACCURACY.md, "Back faces and the grid's faces").
+    float diffuseApertureDeg = 22.0f;
     float specularApertureDeg = 15.0f; ///< Narrowest specular cone; glossier lobes are clamped to it.
     float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
     /// The directional mips leave out voxels whose surface faces the way a cone travels (neither light nor
     /// opacity), so a surface no longer lights and shades the cones leaving it: ceilings beside a light's hot
     /// spot gathered twice the path tracer's light. The price: a one-sided surface with nothing behind it (a
     /// lone quad) is see-through to cones reaching it from behind (docs/ACCURACY.md, "Back faces and the
-    /// grid's faces"). Off until the cones' other biases, which it no longer offsets, are fixed too.
-    bool dropBackFaces = false;
+    /// grid's faces").
+    bool dropBackFaces = true;
     float maxDistance = -1.0f; ///< Cone length in metres; negative = the grid's diagonal.
     /// Cone origins start this many voxels along the normal; on grids finer than 128^3 as far as on that grid
     /// (ConeTracingSetup::coneOffsetMetres).

@@ -156,6 +156,17 @@ void accumulate(vec4 s, float stepLength, float texel, float t, inout vec3 color
     alpha += (1.0 - alpha) * a;
 }
 
+// Where a cone whose sample at uvw (in a grid's [0, 1]^3) lies past the grid's faces takes its last sample:
+// the nearest point half a texel of its lookup inside, so the texels along the face count whole. The steps
+// grow with the cone, and a wall closing the scene at the face lay between the last sample inside and the
+// first outside; ending there without a sample let a closed room's cones out through their walls (a white
+// furnace's gather captured 82%, 96% with this; docs/ACCURACY.md, "Back faces and the grid's faces").
+vec3 lastSampleAtFace(vec3 uvw, float texel, float extent)
+{
+    float inset = 0.5 * texel / extent;
+    return clamp(uvw, vec3(inset), vec3(1.0 - inset));
+}
+
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity. The cone starts
 // `clearOffset` metres off a surface it leaves at cosine `clearCos` to its normal; its footprint stays within
 // 1 / CLEARANCE of its height above that surface's tangent plane, so that coarse lookups gather less of the
@@ -182,12 +193,17 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
             outside = true;
             break;
         }
-#else
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0))))
-            break;
 #endif
         float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
-        accumulate(sampleVolume(uvw, level, dir), stepLength, uVoxelSize * exp2(level), t, color, alpha, occlusion);
+        float texel = uVoxelSize * exp2(level);
+#ifndef CLIP_LEVELS
+        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) {
+            accumulate(sampleVolume(lastSampleAtFace(uvw, texel, uGridExtent), level, dir), stepLength, texel, t,
+                color, alpha, occlusion);
+            break;
+        }
+#endif
+        accumulate(sampleVolume(uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
         t += stepLength;
     }
 #ifdef CLIP_LEVELS
@@ -204,12 +220,17 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
             float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, voxel));
             float level = coneMipLevel(d, voxel, uClipGrid[k].y);
             vec3 uvw = (origin + t * dir - uClipBox[k].xyz) / uClipBox[k].w;
+            float stepLength = coneStepLength(d, voxel, uStepFactor);
+            float texel = voxel * exp2(level);
             if (!insideGrid(uvw, margin * d / uClipBox[k].w)) {
+                // The coarsest level's faces are the scene grid's: the cone ends there as in a single grid.
+                if (k + 1 == CLIP_LEVELS)
+                    accumulate(sampleClip(k, lastSampleAtFace(uvw, texel, uClipBox[k].w), level, dir), stepLength,
+                        texel, t, color, alpha, occlusion);
                 outside = true;
                 break;
             }
-            float stepLength = coneStepLength(d, voxel, uStepFactor);
-            accumulate(sampleClip(k, uvw, level, dir), stepLength, voxel * exp2(level), t, color, alpha, occlusion);
+            accumulate(sampleClip(k, uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
             t += stepLength;
         }
     }

@@ -318,8 +318,9 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     // The presets of docs/ACCURACY.md: High is Balanced (the defaults) with more, narrower cones.
     QCOMPARE(s.voxelResolution, 128);
     QCOMPARE(s.diffuseConeCount, 13);
-    QCOMPARE(s.diffuseApertureDeg, 28.0f);
+    QCOMPARE(s.diffuseApertureDeg, 20.0f);
     QVERIFY(s.anisotropicMips);
+    QVERIFY(s.dropBackFaces);
     QCOMPARE(s.bounces, render::RenderSettings::kConvergedBounces);
     QCOMPARE(s.bounceCellSize, 4);
     QCOMPARE(s.indirectDivisor, 4);
@@ -333,6 +334,9 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     QCOMPARE(document->state().settings.voxelResolution, 64);
     QVERIFY(!document->state().settings.anisotropicMips);
     QCOMPARE(document->state().settings.bounces, 1);
+    QCOMPARE(document->state().settings.diffuseConeCount, 5);
+    // Box mips have no directions: the back-face box has nothing to act on.
+    QVERIFY(!child<QCheckBox>(&dock, "dropBackFacesCheck")->isEnabled());
     QCOMPARE(child<QComboBox>(&dock, "voxelResolutionCombo")->currentData().toInt(), 64);
     QCOMPARE(document->undoStack()->count(), 2);
 
@@ -348,6 +352,15 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     auto* indirect = child<QComboBox>(&dock, "indirectResolutionCombo");
     indirect->setCurrentIndex(indirect->findData(1));
     QCOMPARE(document->state().settings.indirectDivisor, 1);
+
+    // So does the back-face box, on by default with anisotropic mips.
+    auto* backFaces = child<QCheckBox>(&dock, "dropBackFacesCheck");
+    QVERIFY(backFaces->isEnabled() && backFaces->isChecked());
+    backFaces->click();
+    QVERIFY(!document->state().settings.dropBackFaces);
+    document->undoStack()->undo();
+    QVERIFY(document->state().settings.dropBackFaces);
+    QVERIFY(backFaces->isChecked());
 }
 
 void TstDocks::renderSettingsResolutionCombo()

@@ -21,7 +21,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr double kThinWallLeakBound = 0.03;
 constexpr double kThinWallLeakBoundCached = 0.06;
 /// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md).
-constexpr double kThinWallLeakBoundConverged = 0.16;
+constexpr double kThinWallLeakBoundConverged = 0.18;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by
  * `offset`. */
@@ -530,20 +530,19 @@ void HardCasesTest::whiteFurnace()
     const float rho = 0.5f, emission = 1.0f;
     render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
-    // 7% with 60-degree cones (measured 5.5%): voxels on the box's edges and corners average wall with empty
-    // space, so cones leaving through them see less than a full wall, and a wide cone leaving at an angle
-    // narrows to keep clear of its own wall (common/ConeTracing.glsl), reaching the leaky coarse levels
-    // later. 10% with the default 30-degree cones: steps through a wall one voxel thick see it at a coarser,
-    // half-empty level (measured 7.2%; docs/STABILITY.md).
-    // The irradiance cache gathers the same cones per cell instead of per pixel, so the same bound holds.
+    // 4% with anisotropic mips (measured 2.7% low with 60- and 30-degree cones): a cone whose next step would
+    // leave the grid samples once more at its face (common/ConeTracing.glsl), where it stepped over the wall
+    // before (7.2% and 5.5% low then); a cone leaving at an angle still blends the wall it crosses with
+    // chains that see it edge-on (docs/STABILITY.md). The irradiance cache gathers the same cones per cell
+    // instead of per pixel, so the same bound holds.
     struct Case {
         bool anisotropic;
         float apertureDeg;
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : { Case { false, 60.0f, false, 0.0f }, Case { true, 60.0f, false, 0.07f },
-             Case { true, 30.0f, false, 0.10f }, Case { true, 30.0f, true, 0.10f } }) {
+    for (const Case c : { Case { false, 60.0f, false, 0.0f }, Case { true, 60.0f, false, 0.04f },
+             Case { true, 30.0f, false, 0.04f }, Case { true, 30.0f, true, 0.04f } }) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
         settings.bounces = 1; // pixels see E + rho E: the capture of one gather, alone
@@ -575,9 +574,10 @@ void HardCasesTest::whiteFurnace()
 }
 
 // With bounces = 2 each voxel gathers a bounce first, so pixels see E + rho E + rho^2 E. Each gather captures
-// a share c of the light around it (c = 0.82 with anisotropic mips and 60-degree cones, from the
+// a share c of the light around it (c = 0.92 with anisotropic mips and 60-degree cones, from the
 // single-bounce case), so the renderer should give E + rho c (E + rho c E): within 1% of that (the gather per
-// cell and per pixel is the same code), and within 11% of the physical value (measured 9.8%: c compounds).
+// cell and per pixel is the same code), and within 6% of the physical value (measured 4.5%: c compounds;
+// 9.8% before cones took their last sample at the grid's face).
 void HardCasesTest::whiteFurnaceSecondBounce()
 {
     const float rho = 0.5f, emission = 1.0f;
@@ -600,7 +600,7 @@ void HardCasesTest::whiteFurnaceSecondBounce()
     qInfo("white furnace, two bounces: mean %.4f, gather model %.4f (capture %.3f), physical %.4f",
         double(mean), double(model), double(capture), double(physical));
     QVERIFY2(std::abs(mean - model) <= 0.01f * model, qPrintable(QString::number(double(mean))));
-    QVERIFY2(std::abs(mean - physical) <= 0.11f * physical, qPrintable(QString::number(double(mean))));
+    QVERIFY2(std::abs(mean - physical) <= 0.06f * physical, qPrintable(QString::number(double(mean))));
 }
 
 void HardCasesTest::whiteFurnaceConverged_data()
@@ -723,9 +723,11 @@ void HardCasesTest::convergedSolveEndsAtItsLimit_data()
 
 // `bounces=converged` ends by adding the iteration's geometric tail (VoxelBouncePass,
 // bounce/DecideTail.comp): its image must be the one forty plain iterations reach, within the 1% tolerance,
-// in fewer iterations than stopping where the change is small took. Measured: both in 3 iterations, the room
-// 0.4% short of its limit (relative MSE 1.3e-5), the furnace 0.04% over (1.4e-7). Stopping where the change
-// is under 1%, without the tail: 7 and 8 iterations, both 0.4% short.
+// in fewer iterations than stopping where the change is small took. Measured: the room in 4 iterations, 0.8%
+// short of its limit (relative MSE 3.6e-5), the furnace in 3, 0.2% over (3.1e-6). Stopping where the change
+// is under 1%, without the tail, took 7 and 8 iterations before cones took their last sample at the grid's
+// face; with it a gather captures more, the light converges more slowly, and the tail taken at an estimated
+// error under the whole tolerance left the room 1.04% short (bounce/DecideTail.comp now asks for half).
 void HardCasesTest::convergedSolveEndsAtItsLimit()
 {
     QFETCH(bool, furnaceScene);
@@ -817,7 +819,7 @@ void HardCasesTest::thinWallLeak()
     scene.pointLights.push_back({ { -1.0f, 0.5f, 0.0f }, glm::vec3(2.0f), true });
     // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
     // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones
-    // (measured 4.4% against 1.9%): a floor cell under the wall belongs to both rooms and gathers from one
+    // (measured 4.8% against 2.1%): a floor cell under the wall belongs to both rooms and gathers from one
     // point above the wall's voxels, where pixel cones start on their own side; hence its own bound
     // (docs/STABILITY.md).
     for (const int bounces : { 1, render::RenderSettings::kConvergedBounces })
