@@ -643,6 +643,39 @@ std::vector<VoxelTextureMemory> Renderer::voxelMemory() const
     return list;
 }
 
+std::vector<BrickOccupancy> Renderer::brickOccupancy(int brickSize) const
+{
+    if (brickSize < 1)
+        throw std::invalid_argument("brick size must be at least 1");
+    std::vector<BrickOccupancy> grids;
+    for (int grid = 0; grid < gridCount(); ++grid) {
+        const VoxelVolume& v = m_state->volumeOf(grid);
+        BrickOccupancy o;
+        o.grid = grid;
+        o.resolution = v.frame.resolution;
+        o.brickSize = brickSize;
+        const int bricks = (o.resolution + brickSize - 1) / brickSize;
+        o.totalBricks = std::size_t(bricks) * std::size_t(bricks) * std::size_t(bricks);
+        // The static list and the moving objects' list name each voxel once between them (renderFrame).
+        std::vector<glm::ivec3> cells = v.staticVoxels.cells();
+        if (m_state->scene->hasDynamicMeshes()) {
+            const std::vector<glm::ivec3> moving = v.dynamicVoxels.cells();
+            cells.insert(cells.end(), moving.begin(), moving.end());
+        }
+        o.occupiedVoxels = cells.size();
+        std::vector<bool> occupied(o.totalBricks, false);
+        for (const glm::ivec3& c : cells) {
+            const glm::ivec3 b = c / brickSize;
+            occupied[(std::size_t(b.z) * std::size_t(bricks) + std::size_t(b.y)) * std::size_t(bricks)
+                + std::size_t(b.x)]
+                = true;
+        }
+        o.occupiedBricks = std::size_t(std::count(occupied.begin(), occupied.end(), true));
+        grids.push_back(o);
+    }
+    return grids;
+}
+
 void Renderer::setConeSampleCounting(bool enabled)
 {
     if (!enabled)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/BrickOccupancy.h"
 #include "core/FrameStats.h"
 #include "core/NonFiniteCount.h"
 #include "core/VoxelChannel.h"
@@ -129,6 +130,11 @@ public:
     std::size_t voxelBytes() const;
     /** Every 3D texture of the voxel grid with its bytes per mip level (empty before the first frame). */
     std::vector<VoxelTextureMemory> voxelMemory() const;
+    /**
+     * Per grid (gridCount()), the bricks of @p brickSize^3 voxels that hold a surface: what sparse storage
+     * would allocate. Reads the grids' occupied-voxel lists back; for statistics (issue 19's plan).
+     */
+    std::vector<BrickOccupancy> brickOccupancy(int brickSize) const;
     /**
      * Benchmarks only: while on, the cone pass runs a variant that counts its 3D texture fetches. It is
      * slower than the normal pass, so do not time frames drawn with it.

@@ -327,6 +327,7 @@ int RenderCommand::run(int argc, char** argv)
         return fail(2, QString::fromStdString(contextError));
 
     std::vector<render::FrameStats> timed;
+    std::vector<render::BrickOccupancy> bricks;
     render::RadianceImage image;
     std::uint64_t nonFinite = 0;
     try {
@@ -341,6 +342,11 @@ int RenderCommand::run(int argc, char** argv)
                 timed.push_back(stats);
         }
         image = renderer.readFrame();
+        if (parser.isSet(statsOption))
+            for (const int brickSize : { 4, 8 }) {
+                const std::vector<render::BrickOccupancy> grids = renderer.brickOccupancy(brickSize);
+                bricks.insert(bricks.end(), grids.begin(), grids.end());
+            }
         if (parser.isSet(checkFiniteOption)) {
             for (const render::NonFiniteCount& c : renderer.countNonFinite()) {
                 nonFinite += c.count;
@@ -366,8 +372,9 @@ int RenderCommand::run(int argc, char** argv)
         "wrote %s (%dx%d) with %s\n", qPrintable(outPath), width, height, context->description().c_str());
 
     if (parser.isSet(statsOption)) {
-        const QJsonObject json
+        QJsonObject json
             = statsToJson(timed, settings, sceneSpec, QString::fromStdString(context->description()));
+        json["brick_occupancy"] = bricksToJson(bricks);
         if (const QString problem
             = files::AtomicFile::write(parser.value(statsOption), QJsonDocument(json).toJson());
             !problem.isEmpty())
@@ -383,6 +390,12 @@ int RenderCommand::run(int argc, char** argv)
             "  total %.2f ms GPU, voxel memory %.1f MiB (%.1f bytes per cell, %.0f per occupied voxel)\n",
             json["total_gpu_ms"].toDouble(), json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0),
             json["voxel_bytes_per_cell"].toDouble(), json["voxel_bytes_per_occupied_voxel"].toDouble());
+        for (const render::BrickOccupancy& b : bricks)
+            std::printf(
+                "  grid %d (%d^3): %zu of %zu bricks of %d^3 hold a surface (%.1f%%); a pool of them with "
+                "a one-voxel border would take %.1f%% of level 0\n",
+                b.grid, b.resolution, b.occupiedBricks, b.totalBricks, b.brickSize, 100.0 * b.share(),
+                100.0 * b.borderedPoolShare());
     }
     return nonFinite ? 4 : 0;
 }

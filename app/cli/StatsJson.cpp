@@ -53,4 +53,22 @@ QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const ren
     return root;
 }
 
+QJsonArray bricksToJson(const std::vector<render::BrickOccupancy>& bricks)
+{
+    QJsonArray list;
+    for (const render::BrickOccupancy& b : bricks) {
+        QJsonObject o;
+        o["grid"] = b.grid;
+        o["resolution"] = b.resolution;
+        o["brick_size"] = b.brickSize;
+        o["occupied_voxels"] = double(b.occupiedVoxels);
+        o["occupied_bricks"] = double(b.occupiedBricks);
+        o["total_bricks"] = double(b.totalBricks);
+        o["share"] = b.share();
+        o["bordered_pool_share"] = b.borderedPoolShare();
+        list.append(o);
+    }
+    return list;
+}
+
 } // namespace vct::cli

@@ -1,8 +1,10 @@
 #pragma once
 
+#include "core/BrickOccupancy.h"
 #include "core/FrameStats.h"
 #include "scene/RenderSettings.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QString>
 
@@ -13,5 +15,7 @@ namespace vct::cli {
 /** The `--stats` document: per-pass milliseconds (median over the timed frames), voxel memory, settings. */
 QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const render::RenderSettings& settings,
     const QString& scene, const QString& glDescription);
+/** Brick occupancy per grid and brick size (Renderer::brickOccupancy), for `--stats`. */
+QJsonArray bricksToJson(const std::vector<render::BrickOccupancy>& bricks);
 
 } // namespace vct::cli

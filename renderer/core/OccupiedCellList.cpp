@@ -98,4 +98,18 @@ std::size_t OccupiedCellList::count() const
     return command[3];
 }
 
+std::vector<glm::ivec3> OccupiedCellList::cells() const
+{
+    const std::size_t n = count();
+    std::vector<std::uint32_t> codes(n);
+    if (n > 0)
+        glGetNamedBufferSubData(m_cells.id(), 0, GLsizeiptr(n * sizeof(std::uint32_t)), codes.data());
+    // Packed as common/AppendCell.glsl packs them: 10 bits per axis.
+    std::vector<glm::ivec3> cells;
+    cells.reserve(n);
+    for (const std::uint32_t code : codes)
+        cells.emplace_back(int(code & 1023u), int((code >> 10) & 1023u), int(code >> 20));
+    return cells;
+}
+
 } // namespace vct::render

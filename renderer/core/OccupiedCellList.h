@@ -5,7 +5,10 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+
+#include <vector>
 
 namespace vct::render {
 
@@ -55,6 +58,8 @@ public:
     void dispatchOverCells() const;
     /** How many cells are listed: a readback that waits for the listing, for statistics only. */
     std::size_t count() const;
+    /** The listed cells: a readback that waits for the listing, for statistics only. */
+    std::vector<glm::ivec3> cells() const;
 
 private:
     const gl::Program* m_program = nullptr;

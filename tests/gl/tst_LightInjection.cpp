@@ -23,6 +23,7 @@ private slots:
     void droppedBackFacesLeaveTheChainsTravellingTheirWay();
     void directionalChainsMatchCompositingAtEveryLevel_data();
     void directionalChainsMatchCompositingAtEveryLevel();
+    void brickOccupancyMatchesTheVoxels();
     void noGlErrors();
 
 private:
@@ -317,6 +318,43 @@ void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
         int none = 0;
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, m_gl.renderer->readVoxels(channels[tile], 4, none));
     }
+}
+
+// Renderer::brickOccupancy reads the occupied-voxel lists back; the albedo texture's opacity says the same
+// independently: every brick holding a voxel with opacity, and only those.
+void LightInjectionTest::brickOccupancyMatchesTheVoxels()
+{
+    render(floorScene(true), 16);
+    int size = 0;
+    const std::vector<float> albedo = m_gl.renderer->readVoxels("albedo", 0, size);
+    QCOMPARE(size, 16);
+    for (const int brickSize : { 4, 8 }) {
+        const std::vector<render::BrickOccupancy> grids = m_gl.renderer->brickOccupancy(brickSize);
+        QCOMPARE(grids.size(), std::size_t(1));
+        const render::BrickOccupancy& o = grids.front();
+        const int bricks = size / brickSize;
+        std::vector<bool> expected(std::size_t(bricks * bricks * bricks), false);
+        std::size_t voxels = 0;
+        for (int z = 0; z < size; ++z)
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x)
+                    if (albedo[((std::size_t(z) * size + y) * size + x) * 4 + 3] > 0.0f) {
+                        ++voxels;
+                        expected[std::size_t(
+                            ((z / brickSize) * bricks + y / brickSize) * bricks + x / brickSize)]
+                            = true;
+                    }
+        const auto occupied = std::size_t(std::count(expected.begin(), expected.end(), true));
+        QCOMPARE(o.resolution, 16);
+        QCOMPARE(o.occupiedVoxels, voxels);
+        QCOMPARE(o.totalBricks, expected.size());
+        QCOMPARE(o.occupiedBricks, occupied);
+        QVERIFY(occupied > 0 && occupied < expected.size()); // the floor and the blocker, not the whole grid
+        QVERIFY(std::abs(o.borderedPoolShare()
+                    - double(occupied) * std::pow(brickSize + 2, 3) / std::pow(double(size), 3))
+            < 1e-12);
+    }
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, m_gl.renderer->brickOccupancy(0));
 }
 
 void LightInjectionTest::noGlErrors()
