@@ -418,8 +418,8 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
 {
     render::RenderSettings s = base;
     // From the accuracy/time study (docs/ACCURACY.md, "Recommended defaults and presets"): only settings on
-    // or next to the frontier in both the Cornell box and the atrium. Finer grids and more cones were
-    // measured to cost more without lowering the error, so no preset uses them.
+    // or next to the frontier in both the Cornell box and the atrium. Finer grids were measured to cost more
+    // without lowering the error, so no preset uses them.
     s.diffuseConeCount = 7;
     s.diffuseApertureDeg = 22.0f;
     s.dropBackFaces = true;
