@@ -70,7 +70,8 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
 {
     // Level 0 and the three directional chains are fetched at every step, and blended by the level: llvmpipe
     // runs both sides of a branch on the level anyway, and written as a branch it fetched level 0 twice
-    // (five fetches a step where four do; the cone loop ~20% faster).
+    // (five fetches a step where four do; the cone loop ~20% faster). The grid a cone starts in is marched in
+    // phases instead (marchPhase), each a loop of its own that fetches only what its footprints need.
     COUNT_FETCHES(4);
     vec4 finest = textureLod(radiance, uvw, 0.0);
     vec3 w = dir * dir; // sums to one for a unit direction
@@ -82,6 +83,43 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
 }
 #define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, towards, uvw, level, dir)
 #endif
+
+// Phases of a cone's march through its first grid (traceCone): the footprint within a voxel reads level 0
+// alone, one between one and two voxels blends it with the chains, a wider one reads the chains alone. Each
+// phase is a loop of its own with its own lookups, so that a step pays for the fetches its phase needs.
+const int kPhaseFinest = 0;
+const int kPhaseBlend = 1;
+const int kPhaseCoarse = 2;
+
+vec4 sampleVolumeIn(int phase, vec3 uvw, float level, vec3 dir)
+{
+#ifdef ANISOTROPIC
+    if (phase == kPhaseFinest) {
+        COUNT_FETCHES(1);
+        return textureLod(uRadiance, uvw, 0.0);
+    }
+    if (phase == kPhaseCoarse) {
+        COUNT_FETCHES(3);
+        vec3 w = dir * dir;
+        float l = max(level - 1.0, 0.0);
+        return w.x * sampleTowards(uTowards, dir.x > 0.0 ? 0 : 1, uvw, l)
+            + w.y * sampleTowards(uTowards, dir.y > 0.0 ? 2 : 3, uvw, l)
+            + w.z * sampleTowards(uTowards, dir.z > 0.0 ? 4 : 5, uvw, l);
+    }
+#endif
+    return SAMPLE_GRID(uRadiance, uTowards, uvw, level, dir);
+}
+
+bool inPhase(int phase, float level)
+{
+#ifdef ANISOTROPIC
+    if (phase == kPhaseFinest)
+        return level <= 0.0;
+    if (phase == kPhaseBlend)
+        return level < 1.0;
+#endif
+    return true;
+}
 
 // The grid's own volume.
 vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
@@ -167,6 +205,39 @@ vec3 lastSampleAtFace(vec3 uvw, float texel, float extent)
     return clamp(uvw, vec3(inset), vec3(1.0 - inset));
 }
 
+// One phase of a cone's march through the grid it starts in: steps while the footprint stays in it. Returns whether the
+// cone goes on into the next phase; `outside` says it reached past the grid's faces.
+bool marchPhase(int phase, vec3 origin, vec3 dir, float tanHalf, float clearCos, float clearOffset, inout int step,
+    inout float t, inout vec3 color, inout float alpha, inout float occlusion, inout bool outside)
+{
+    for (; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
+        float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, uVoxelSize));
+        float level = coneMipLevel(d, uVoxelSize, uMaxLevel);
+        if (!inPhase(phase, level))
+            return true;
+        vec3 uvw = (origin + t * dir - uGridOrigin) / uGridExtent;
+#ifdef CLIP_LEVELS
+        // Before a lookup reaches past this grid, on into the coarser levels.
+        if (!insideGrid(uvw, d / uGridExtent)) {
+            outside = true;
+            return false;
+        }
+#endif
+        float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
+        float texel = uVoxelSize * exp2(level);
+#ifndef CLIP_LEVELS
+        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) {
+            accumulate(sampleVolumeIn(phase, lastSampleAtFace(uvw, texel, uGridExtent), level, dir), stepLength,
+                texel, t, color, alpha, occlusion);
+            return false;
+        }
+#endif
+        accumulate(sampleVolumeIn(phase, uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
+        t += stepLength;
+    }
+    return false;
+}
+
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity. The cone starts
 // `clearOffset` metres off a surface it leaves at cosine `clearCos` to its normal; its footprint stays within
 // 1 / CLEARANCE of its height above that surface's tangent plane, so that coarse lookups gather less of the
@@ -177,35 +248,12 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
     float alpha = 0.0;
     occlusion = 0.0;
     float t = uVoxelSize;
-#ifdef CLIP_LEVELS
     // A cone that starts in a clip level skips the grids finer than it.
     bool outside = firstLevel >= 0;
-    for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99 && firstLevel < 0; ++step) {
-#else
-    for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
-#endif
-        float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, uVoxelSize));
-        float level = coneMipLevel(d, uVoxelSize, uMaxLevel);
-        vec3 uvw = (origin + t * dir - uGridOrigin) / uGridExtent;
-#ifdef CLIP_LEVELS
-        // Before a lookup reaches past this grid, on into the coarser levels.
-        if (!insideGrid(uvw, d / uGridExtent)) {
-            outside = true;
-            break;
-        }
-#endif
-        float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
-        float texel = uVoxelSize * exp2(level);
-#ifndef CLIP_LEVELS
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) {
-            accumulate(sampleVolume(lastSampleAtFace(uvw, texel, uGridExtent), level, dir), stepLength, texel, t,
-                color, alpha, occlusion);
-            break;
-        }
-#endif
-        accumulate(sampleVolume(uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
-        t += stepLength;
-    }
+    int step = 0;
+    if (firstLevel < 0 && marchPhase(kPhaseFinest, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside)
+        && marchPhase(kPhaseBlend, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside))
+        marchPhase(kPhaseCoarse, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside);
 #ifdef CLIP_LEVELS
     // The same in each coarser level the cone reaches, the same t going on; the coarsest ends at its faces.
     for (int k = 0; k < CLIP_LEVELS; ++k) {

@@ -75,15 +75,29 @@ void ConeSampleCountTest::countMatchesTheConeLoop()
         const float d = render::conemath::coneDiameter(t.back(), tanHalf);
         t.push_back(t.back() + render::conemath::coneStepLength(d, voxel, settings.stepFactor));
     }
-    const int steps = 4;
+    const int steps = 7; // enough to reach footprints over two voxels
     // The cone (straight up from the floor at y = 0) must end by its length: its last sample inside the grid.
     const float gridTop = renderer.gridOrigin().y + voxel * float(renderer.voxelResolution());
     QVERIFY2(settings.coneOffsetVoxels * voxel + t[steps - 1] < gridTop - voxel,
         qPrintable(QString::number(gridTop)));
     settings.maxDistance = 0.5f * (t[steps - 1] + t[steps]); // halfway, so float rounding cannot add a step
-    // Box-filtered mips take one fetch a step; anisotropic ones four, level 0 and the three chains the
-    // direction weighs, blended by the level (shaders/common/ConeTracing.glsl).
-    const std::uint64_t fetchesPerPixel = std::uint64_t(steps) * (anisotropic ? 4 : 1);
+    // Box-filtered mips take one fetch a step. Anisotropic ones take what the step's footprint needs
+    // (shaders/common/ConeTracing.glsl, the march's phases): level 0 alone within a voxel, level 0 and the
+    // three chains the direction weighs between one and two voxels, the three chains alone beyond. The cone
+    // points along the normal, so its clearance (the footprint's cap near the surface) is the offset plus t,
+    // over 1.5.
+    std::uint64_t fetchesPerPixel = 0;
+    int phasesSeen = 0;
+    for (int i = 0; i < steps; ++i) {
+        const float footprint = std::min(render::conemath::coneDiameter(t[std::size_t(i)], tanHalf),
+            std::max((settings.coneOffsetVoxels * voxel + t[std::size_t(i)]) / 1.5f, voxel));
+        const float level = render::conemath::coneMipLevel(footprint, voxel, 16.0f);
+        const int fetches = !anisotropic ? 1 : level <= 0.0f ? 1 : level < 1.0f ? 4 : 3;
+        phasesSeen |= 1 << fetches;
+        fetchesPerPixel += std::uint64_t(fetches);
+    }
+    // The scene is made so that the count covers every phase the loop has.
+    QCOMPARE(phasesSeen, anisotropic ? (1 << 1) | (1 << 4) | (1 << 3) : 1 << 1);
     renderer.setSettings(settings);
 
     renderer.renderFrame(camera, kSize, kSize);
