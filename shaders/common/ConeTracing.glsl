@@ -70,8 +70,8 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
 {
     // Level 0 and the three directional chains are fetched at every step, and blended by the level: llvmpipe
     // runs both sides of a branch on the level anyway, and written as a branch it fetched level 0 twice
-    // (five fetches a step where four do; the cone loop ~20% faster). The grid a cone starts in is marched in
-    // phases instead (marchPhase), each a loop of its own that fetches only what its footprints need.
+    // (five fetches a step where four do; the cone loop ~20% faster). A cone's march goes by phases instead
+    // (marchPhase), each a loop of its own that fetches only what its footprints need.
     COUNT_FETCHES(4);
     vec4 finest = textureLod(radiance, uvw, 0.0);
     vec3 w = dir * dir; // sums to one for a unit direction
@@ -84,30 +84,40 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
 #define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, towards, uvw, level, dir)
 #endif
 
-// Phases of a cone's march through its first grid (traceCone): the footprint within a voxel reads level 0
-// alone, one between one and two voxels blends it with the chains, a wider one reads the chains alone. Each
-// phase is a loop of its own with its own lookups, so that a step pays for the fetches its phase needs.
+// Phases of a cone's march through a grid (traceCone): a footprint within a voxel reads level 0 alone, one
+// between one and two voxels blends it with the chains, a wider one reads the chains alone. Each phase is a
+// loop of its own with its own lookups (marchPhase), so that a step pays only for the fetches its phase needs.
 const int kPhaseFinest = 0;
 const int kPhaseBlend = 1;
 const int kPhaseCoarse = 2;
+const int kPhaseWhole = 3; // one loop, level 0 and the chains blended by the level at every step
 
-vec4 sampleVolumeIn(int phase, vec3 uvw, float level, vec3 dir)
+// A grid's chains as a parameter, where there are chains.
+#ifdef ANISOTROPIC
+#define TOWARDS_PARAM , sampler3D towards
+#define TOWARDS_ARG(chains) , chains
+#else
+#define TOWARDS_PARAM
+#define TOWARDS_ARG(chains)
+#endif
+
+vec4 samplePhase(int phase, sampler3D radiance TOWARDS_PARAM, vec3 uvw, float level, vec3 dir)
 {
 #ifdef ANISOTROPIC
     if (phase == kPhaseFinest) {
         COUNT_FETCHES(1);
-        return textureLod(uRadiance, uvw, 0.0);
+        return textureLod(radiance, uvw, 0.0);
     }
     if (phase == kPhaseCoarse) {
         COUNT_FETCHES(3);
         vec3 w = dir * dir;
         float l = max(level - 1.0, 0.0);
-        return w.x * sampleTowards(uTowards, dir.x > 0.0 ? 0 : 1, uvw, l)
-            + w.y * sampleTowards(uTowards, dir.y > 0.0 ? 2 : 3, uvw, l)
-            + w.z * sampleTowards(uTowards, dir.z > 0.0 ? 4 : 5, uvw, l);
+        return w.x * sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l)
+            + w.y * sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l)
+            + w.z * sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l);
     }
 #endif
-    return SAMPLE_GRID(uRadiance, uTowards, uvw, level, dir);
+    return SAMPLE_GRID(radiance, towards, uvw, level, dir);
 }
 
 bool inPhase(int phase, float level)
@@ -121,25 +131,11 @@ bool inPhase(int phase, float level)
     return true;
 }
 
-// The grid's own volume.
-vec4 sampleVolume(vec3 uvw, float level, vec3 dir)
-{
-    return SAMPLE_GRID(uRadiance, uTowards, uvw, level, dir);
-}
-
-#ifdef CLIP_LEVELS
-// Clip level k's volume.
-vec4 sampleClip(int k, vec3 uvw, float level, vec3 dir)
-{
-    return SAMPLE_GRID(uClipRadiance[k], uClipTowards[k], uvw, level, dir);
-}
-
 // Whether uvw (in a grid's [0, 1]^3) is further than margin from the grid's faces.
 bool insideGrid(vec3 uvw, float margin)
 {
     return all(greaterThanEqual(uvw, vec3(margin))) && all(lessThanEqual(uvw, vec3(1.0 - margin)));
 }
-#endif
 
 #ifdef CLIP_LEVELS
 // A gather within kClipBand voxels of the faces of the finest grid holding its surface blends with the same
@@ -205,38 +201,70 @@ vec3 lastSampleAtFace(vec3 uvw, float texel, float extent)
     return clamp(uvw, vec3(inset), vec3(1.0 - inset));
 }
 
-// One phase of a cone's march through the grid it starts in: steps while the footprint stays in it. Returns whether the
+// Where a cone marches: a grid's corner, side and voxel (metres), its top mip level, how far from its faces
+// (in footprints) the cone leaves it, and whether it is the last grid, whose faces end the cone with a sample
+// on them (lastSampleAtFace).
+struct ConeGrid {
+    vec3 origin;
+    float extent;
+    float voxel;
+    float maxLevel;
+    float margin;
+    bool last;
+};
+
+// One phase of a cone's march through a grid: steps while the footprint stays in the phase. Returns whether the
 // cone goes on into the next phase; `outside` says it reached past the grid's faces.
-bool marchPhase(int phase, vec3 origin, vec3 dir, float tanHalf, float clearCos, float clearOffset, inout int step,
-    inout float t, inout vec3 color, inout float alpha, inout float occlusion, inout bool outside)
+bool marchPhase(int phase, ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3 origin, vec3 dir, float tanHalf,
+    float clearCos, float clearOffset, inout int step, inout float t, inout vec3 color, inout float alpha,
+    inout float occlusion, inout bool outside)
 {
     for (; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
-        float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, uVoxelSize));
-        float level = coneMipLevel(d, uVoxelSize, uMaxLevel);
+        float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, grid.voxel));
+        float level = coneMipLevel(d, grid.voxel, grid.maxLevel);
         if (!inPhase(phase, level))
             return true;
-        vec3 uvw = (origin + t * dir - uGridOrigin) / uGridExtent;
-#ifdef CLIP_LEVELS
-        // Before a lookup reaches past this grid, on into the coarser levels.
-        if (!insideGrid(uvw, d / uGridExtent)) {
+        vec3 uvw = (origin + t * dir - grid.origin) / grid.extent;
+        float stepLength = coneStepLength(d, grid.voxel, uStepFactor);
+        float texel = grid.voxel * exp2(level);
+        // Before a lookup reaches past a grid with a coarser one around it, on into that one.
+        if (!insideGrid(uvw, grid.margin * d / grid.extent)) {
+            if (grid.last)
+                accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards), lastSampleAtFace(uvw, texel, grid.extent),
+                               level, dir),
+                    stepLength, texel, t, color, alpha, occlusion);
             outside = true;
             return false;
         }
-#endif
-        float stepLength = coneStepLength(d, uVoxelSize, uStepFactor);
-        float texel = uVoxelSize * exp2(level);
-#ifndef CLIP_LEVELS
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) {
-            accumulate(sampleVolumeIn(phase, lastSampleAtFace(uvw, texel, uGridExtent), level, dir), stepLength,
-                texel, t, color, alpha, occlusion);
-            return false;
-        }
-#endif
-        accumulate(sampleVolumeIn(phase, uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
+        accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards), uvw, level, dir), stepLength, texel, t, color,
+            alpha, occlusion);
         t += stepLength;
     }
     return false;
 }
+
+// A cone's march through one grid from t on: phase after phase in a single grid; in a clipmap one loop per
+// level, since there the phases' loops (three per level) made the bounce gathers on the Sponza no faster and the
+// per-pixel cones 2-5% slower (docs/DESIGN.md, "A loop per phase of the march").
+#ifdef CLIP_LEVELS
+#define MARCH_GRID(grid, radiance, towards)                                                                        \
+    {                                                                                                              \
+        int step = 0;                                                                                              \
+        marchPhase(kPhaseWhole, grid, radiance TOWARDS_ARG(towards), origin, dir, tanHalf, clearCos, clearOffset,  \
+            step, t, color, alpha, occlusion, outside);                                                            \
+    }
+#else
+#define MARCH_GRID(grid, radiance, towards)                                                                        \
+    {                                                                                                              \
+        int step = 0;                                                                                              \
+        if (marchPhase(kPhaseFinest, grid, radiance TOWARDS_ARG(towards), origin, dir, tanHalf, clearCos,          \
+                clearOffset, step, t, color, alpha, occlusion, outside)                                            \
+            && marchPhase(kPhaseBlend, grid, radiance TOWARDS_ARG(towards), origin, dir, tanHalf, clearCos,        \
+                clearOffset, step, t, color, alpha, occlusion, outside))                                           \
+            marchPhase(kPhaseCoarse, grid, radiance TOWARDS_ARG(towards), origin, dir, tanHalf, clearCos,          \
+                clearOffset, step, t, color, alpha, occlusion, outside);                                           \
+    }
+#endif
 
 // Front-to-back compositing along one cone; returns premultiplied radiance and opacity. The cone starts
 // `clearOffset` metres off a surface it leaves at cosine `clearCos` to its normal; its footprint stays within
@@ -250,10 +278,15 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
     float t = uVoxelSize;
     // A cone that starts in a clip level skips the grids finer than it.
     bool outside = firstLevel >= 0;
-    int step = 0;
-    if (firstLevel < 0 && marchPhase(kPhaseFinest, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside)
-        && marchPhase(kPhaseBlend, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside))
-        marchPhase(kPhaseCoarse, origin, dir, tanHalf, clearCos, clearOffset, step, t, color, alpha, occlusion, outside);
+#ifdef CLIP_LEVELS
+    const bool onlyGrid = false;
+#else
+    const bool onlyGrid = true;
+#endif
+    if (firstLevel < 0) {
+        ConeGrid grid = ConeGrid(uGridOrigin, uGridExtent, uVoxelSize, uMaxLevel, onlyGrid ? 0.0 : 1.0, onlyGrid);
+        MARCH_GRID(grid, uRadiance, uTowards)
+    }
 #ifdef CLIP_LEVELS
     // The same in each coarser level the cone reaches, the same t going on; the coarsest ends at its faces.
     for (int k = 0; k < CLIP_LEVELS; ++k) {
@@ -262,25 +295,9 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
         if (!outside || alpha >= 0.99 || t >= uMaxDistance)
             break;
         outside = false;
-        float voxel = uClipGrid[k].x;
-        float margin = k + 1 < CLIP_LEVELS ? 1.0 : 0.0;
-        for (int step = 0; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
-            float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, voxel));
-            float level = coneMipLevel(d, voxel, uClipGrid[k].y);
-            vec3 uvw = (origin + t * dir - uClipBox[k].xyz) / uClipBox[k].w;
-            float stepLength = coneStepLength(d, voxel, uStepFactor);
-            float texel = voxel * exp2(level);
-            if (!insideGrid(uvw, margin * d / uClipBox[k].w)) {
-                // The coarsest level's faces are the scene grid's: the cone ends there as in a single grid.
-                if (k + 1 == CLIP_LEVELS)
-                    accumulate(sampleClip(k, lastSampleAtFace(uvw, texel, uClipBox[k].w), level, dir), stepLength,
-                        texel, t, color, alpha, occlusion);
-                outside = true;
-                break;
-            }
-            accumulate(sampleClip(k, uvw, level, dir), stepLength, texel, t, color, alpha, occlusion);
-            t += stepLength;
-        }
+        bool coarsest = k + 1 == CLIP_LEVELS;
+        ConeGrid grid = ConeGrid(uClipBox[k].xyz, uClipBox[k].w, uClipGrid[k].x, uClipGrid[k].y, coarsest ? 0.0 : 1.0, coarsest);
+        MARCH_GRID(grid, uClipRadiance[k], uClipTowards[k])
     }
 #endif
     return vec4(color, alpha);
