@@ -133,8 +133,8 @@ void CompositePass::execute(FrameContext& frame)
         program.set("uDivisor", s.indirectDivisor);
         program.set("uSpecularDivisor", s.specularDivisor);
         program.set("uAreaDivisor", s.areaDivisor);
-        // Half a voxel clears the surface's own depth in the shadow map at any grazing angle we care about.
-        program.set("uShadowOffset", 0.5f * frame.voxels.frame.voxelSize());
+        // The upsampler measures how far a traced surface lies from this pixel in voxels.
+        program.set("uVoxelSize", frame.voxels.frame.voxelSize());
         program.set("uAreaShadowOffset", ConeTracingSetup::coneOffsetMetres(frame));
         applyAreaLightUniforms(program, frame);
         program.set("uPhongLtcSize", float(PhongLtcTable::kSize));

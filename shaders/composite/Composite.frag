@@ -33,7 +33,7 @@ layout(binding = 2) uniform sampler2D uAreaShadow;       // ScreenTargets::areaS
 layout(binding = 4) uniform sampler2D uAreaShadowGuide;  // ScreenTargets::areaShadowGuide
 
 uniform vec3 uCameraPosition;
-uniform float uShadowOffset; // metres along the normal for shadow lookups
+uniform float uVoxelSize; // metres: the upsampler weighs distances from a surface in voxels
 uniform float uAreaShadowOffset; // metres along the normal where area-light shadow cones start
 uniform int uDivisor;         // the diffuse grid's
 uniform int uSpecularDivisor; // the specular grid's
@@ -94,7 +94,7 @@ void main()
         vec3 toLight = normalize(d);
         float cosTheta = max(dot(n, toLight), 0.0);
         vec3 irradiance = uPointLightIntensity[i].rgb * spotFactor(i, p) / distance2
-            * pointLightVisibility(i, p + n * uShadowOffset, n) * cosTheta;
+            * pointLightVisibility(i, pointShadowOrigin(i, p, n), n) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY // normalised modified Phong
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);
@@ -104,7 +104,7 @@ void main()
     for (int i = 0; i < kDirectionalLightCount; ++i) {
         vec3 toLight = -normalize(uDirectionalLightDirection[i].xyz);
         float cosTheta = max(dot(n, toLight), 0.0);
-        vec3 irradiance = uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, p + n * uShadowOffset, n) * cosTheta;
+        vec3 irradiance = uDirectionalLightIrradiance[i].rgb * directionalLightVisibility(i, directionalShadowOrigin(i, p, n), n) * cosTheta;
         vec3 brdf = albedo / kPi;
 #ifdef GLOSSY
         brdf += specular * (shininess + 2.0) / (2.0 * kPi) * pow(max(dot(mirror, toLight), 0.0), shininess);

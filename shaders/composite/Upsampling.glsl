@@ -2,7 +2,7 @@
 // four nearest traced pixels, weighted bilinearly and by how well their surface (the tangent plane of the
 // full-resolution pixel each was traced from, kept in the grid's guide) matches this pixel's normal and
 // passes through this pixel, so light does not bleed across depth or orientation edges.
-// Needs uShadowOffset (half a voxel, metres). fromCamera is this pixel's surface point relative to the camera.
+// Needs uVoxelSize (metres). fromCamera is this pixel's surface point relative to the camera.
 
 struct UpsamplingTaps {
     ivec2 texel[4];
@@ -19,7 +19,7 @@ UpsamplingTaps upsamplingTaps(sampler2D guide, int divisor, ivec2 pixel, vec3 fr
     float weightSum = 0.0;
     float bestSimilarity = -1.0;
     int best = 0;
-    float planeScale = 1.0 / max(uShadowOffset * 2.0, 1e-6); // metres to voxels
+    float planeScale = 1.0 / max(uVoxelSize, 1e-6); // metres to voxels
     for (int i = 0; i < 4; ++i) {
         ivec2 offset = ivec2(i & 1, i >> 1);
         ivec2 q = clamp(base + offset, ivec2(0), gridSize - 1);
