@@ -76,21 +76,23 @@ float spotFactor(int i, vec3 p)
     return t * t * (3.0 - 2.0 * t);
 }
 
-// Where a pixel's shadow lookup starts: off its surface along the normal by a share of the map's texel there
-// (a cube face's texel grows with the distance along its major axis, an orthographic map's does not), so that
-// a surface does not shadow itself between the texel centres that sample it. It used to be half a voxel: on the
-// Sponza at 128^3, 14 cm for texels of 4 cm, and every surface within 14 cm of its blocker, or lit at a
-// grazing angle, escaped the shadow (direct light 8.5% over the path tracer's; docs/ACCURACY.md).
-#ifndef SHADOW_NORMAL_TEXELS
-#define SHADOW_NORMAL_TEXELS 0.5
-#endif
+// Where a pixel's shadow lookup starts: off its surface along the normal by half the map's texel there (a cube
+// face's texel grows with the distance along its major axis, an orthographic map's does not), so that a
+// surface does not shadow itself between the texel centres that sample it. An offset in voxels let every
+// surface within that distance of its blocker, or lit at a grazing angle, escape its shadow on coarse grids
+// (the Sponza's direct light 8.5% over the path tracer's at 128^3); below half a texel a point light's
+// receivers shadow themselves (docs/ACCURACY.md, "Shadow lookups at the shadow map's scale").
+const float kShadowNormalTexels = 0.5;
 // Never less than a few steps of float at p: far from the origin (a scene placed at 1e5) positions round to
 // more than a texel, and a surface shadowed itself (tst_HardCases::scaleAndOffsetInvariance).
 const float kShadowPositionSteps = 4.0;
+// A directional map's depth bias, in window depth (its range spans the scene): with the lookup off the surface
+// it only absorbs depth quantisation, and 2e-3 (8 cm on the Sponza) let contact shadows through.
+const float kDirectionalDepthBias = 5e-4;
 vec3 shadowOrigin(vec3 p, vec3 n, float texel)
 {
     float floatStep = majorAxis(p) * exp2(-23.0);
-    return p + n * max(SHADOW_NORMAL_TEXELS * texel, kShadowPositionSteps * floatStep);
+    return p + n * max(kShadowNormalTexels * texel, kShadowPositionSteps * floatStep);
 }
 vec3 pointShadowOrigin(int i, vec3 p, vec3 n)
 {
@@ -187,7 +189,7 @@ float directionalLightSoftVisibility(int i, vec3 coord, vec3 p, vec3 n, float ta
     // depth change per unit of window x and y, limited where the receiver is nearly edge-on.
     vec3 nw = vec3(dot(rowX, n), dot(rowY, n), dot(rowZ, n)) * metresPerUnit * metresPerUnit;
     vec2 gradient = abs(nw.z) > 1e-6 ? clamp(-nw.xy / nw.z, vec2(-4.0), vec2(4.0)) : vec2(0.0);
-    float bias = 5e-4;
+    float bias = kDirectionalDepthBias;
     // Blockers anywhere between the light's side of the map and the receiver.
     vec2 search = vec2(coord.z * metresPerUnit.z * tanHalf) / metresPerUnit.xy;
     search = min(search, vec2(0.05));
@@ -226,5 +228,5 @@ float directionalLightVisibility(int i, vec3 p, vec3 n)
     if (tanHalf > 0.0)
         return directionalLightSoftVisibility(i, coord, p, n, tanHalf);
 #endif
-    return texture(uDirectionalShadow, vec4(coord.xy, float(i), coord.z - 5e-4));
+    return texture(uDirectionalShadow, vec4(coord.xy, float(i), coord.z - kDirectionalDepthBias));
 }
