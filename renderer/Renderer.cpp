@@ -657,19 +657,15 @@ std::vector<BrickOccupancy> Renderer::brickOccupancy(int brickSize) const
         const int bricks = (o.resolution + brickSize - 1) / brickSize;
         o.totalBricks = std::size_t(bricks) * std::size_t(bricks) * std::size_t(bricks);
         // The static list and the moving objects' list name each voxel once between them (renderFrame).
-        std::vector<glm::ivec3> cells = v.staticVoxels.cells();
-        if (m_state->scene->hasDynamicMeshes()) {
-            const std::vector<glm::ivec3> moving = v.dynamicVoxels.cells();
-            cells.insert(cells.end(), moving.begin(), moving.end());
-        }
-        o.occupiedVoxels = cells.size();
         std::vector<bool> occupied(o.totalBricks, false);
-        for (const glm::ivec3& c : cells) {
-            const glm::ivec3 b = c / brickSize;
-            occupied[(std::size_t(b.z) * std::size_t(bricks) + std::size_t(b.y)) * std::size_t(bricks)
-                + std::size_t(b.x)]
-                = true;
-        }
+        for (const OccupiedCellList* list : v.occupiedVoxels(m_state->scene->hasDynamicMeshes()))
+            for (const glm::ivec3& c : list->cells()) {
+                const glm::ivec3 b = c / brickSize;
+                occupied[(std::size_t(b.z) * std::size_t(bricks) + std::size_t(b.y)) * std::size_t(bricks)
+                    + std::size_t(b.x)]
+                    = true;
+                ++o.occupiedVoxels;
+            }
         o.occupiedBricks = std::size_t(std::count(occupied.begin(), occupied.end(), true));
         grids.push_back(o);
     }
