@@ -96,7 +96,8 @@ void ensureInspectionMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder
         // The cell marks are scratch for building the levels: they go once the levels are built.
         resources.apply("voxel inspector",
             { { resource::kInspectionMips, ResourceGroup::Voxels, &v.inspectionMips,
-                  needed ? gl::TextureDesc::volume(GL_RGBA16F, source.width(), levels) : gl::TextureDesc {} },
+                  needed ? gl::TextureDesc::volume(GL_RGBA16F, v.frame.resolution, levels)
+                         : gl::TextureDesc {} },
                 { resource::kInspectionCellMarks, ResourceGroup::Voxels, &builder.marks(),
                     building ? VoxelMipBuilder::marksDesc(v.frame.resolution) : gl::TextureDesc {} } });
     };
@@ -105,10 +106,21 @@ void ensureInspectionMips(const ShaderLibrary& shaders, VoxelMipBuilder& builder
     if (!needed || (v.inspectionMips.serial() == v.inspectionMipsSerial && v.inspectionMipsKey == key))
         return;
     make(true);
-    const int side = source.width();
+    const int side = v.frame.resolution;
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glCopyImageSubData(source.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.inspectionMips.id(), GL_TEXTURE_3D, 0, 0, 0,
-        0, side, side, side);
+    if (v.sparse) {
+        const gl::Program& dense
+            = shaders.program({ "sparse level 0, dense", { "inspector/DenseLevel0.comp" }, {} });
+        dense.use();
+        v.brickTable.bindUnit(BRICK_TABLE_UNIT);
+        source.bindUnit(0);
+        v.inspectionMips.bindImage(0, 0, GL_WRITE_ONLY);
+        const GLuint groups = GLuint((side + 3) / 4);
+        glDispatchCompute(groups, groups, groups);
+    } else {
+        glCopyImageSubData(source.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.inspectionMips.id(), GL_TEXTURE_3D, 0, 0,
+            0, 0, side, side, side);
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     builder.listCells(shaders, v.frame.resolution, levels, v.occupiedVoxels(dynamicMeshes));
     builder.buildBox(shaders, v.inspectionMips);
@@ -174,6 +186,36 @@ std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& 
     std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
     glGetTextureImage(
         texture.id(), level, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+    return data;
+}
+
+// A sparse grid's level 0 as a dense grid's reads (common/VoxelBricks.glsl): each voxel from its brick's
+// place in the pool, zero where there is none.
+std::vector<float> readSparseLevel0(const VoxelVolume& v, const gl::Texture& pool, int& size)
+{
+    const std::vector<float> texels = [&] {
+        std::vector<float> data(std::size_t(pool.width()) * pool.height() * pool.depth() * 4);
+        glGetTextureImage(pool.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
+        return data;
+    }();
+    size = v.frame.resolution;
+    std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4, 0.0f);
+    for (int z = 0; z < size; ++z)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const glm::ivec3 voxel(x, y, z);
+                const std::uint32_t slot = v.bricks.slot(voxel / BrickPool::kBrickVoxels);
+                if (slot == 0)
+                    continue;
+                const glm::ivec3 t = BrickPool::slotPosition(slot, v.poolBricks) * BrickPool::kBrickTexels
+                    + voxel % BrickPool::kBrickVoxels;
+                const std::size_t from = ((std::size_t(t.z) * pool.height() + std::size_t(t.y)) * pool.width()
+                                             + std::size_t(t.x))
+                    * 4;
+                const std::size_t to = ((std::size_t(z) * size + std::size_t(y)) * size + std::size_t(x)) * 4;
+                std::copy(texels.begin() + std::ptrdiff_t(from), texels.begin() + std::ptrdiff_t(from + 4),
+                    data.begin() + std::ptrdiff_t(to));
+            }
     return data;
 }
 
@@ -256,10 +298,16 @@ void Renderer::setSettings(const RenderSettings& settings)
     // What a setting invalidates is decided by the passes: each one's reuse key holds the settings it reads.
     if (settings.diffuseConeCount != m_state->cones.size())
         m_state->cones = ConeSet::diffuse(settings.diffuseConeCount);
-    if (settings.gridLevels() != m_settings.gridLevels() || !m_state->pipeline) {
-        // Another number of grids is another set of passes; everything is made again.
+    const bool sparse = settings.voxelMode == VoxelMode::Sparse;
+    if (settings.gridLevels() != m_settings.gridLevels() || !m_state->pipeline
+        || sparse != (m_settings.voxelMode == VoxelMode::Sparse)) {
+        // Another number of grids is another set of passes, and a sparse grid's passes address level 0
+        // through its bricks (common/VoxelBricks.glsl): everything is made again.
+        m_state->shaders->setSharedDefines(
+            sparse ? std::vector<std::string> { "SPARSE_VOXELS" } : std::vector<std::string> {});
         m_state->pipeline = makePipeline(settings.gridLevels(), m_state->clipLevels);
         m_state->voxels = VoxelVolume {};
+        m_state->inspector = VoxelInspector {};
         applyPipelineModes();
     }
     m_settings = settings;
@@ -384,6 +432,10 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     st.voxels.frame = ClipmapLayout::level(sceneGrid, m_settings.gridLevels(), 0, camera.position);
     resizeScreen(st.screen, width, height, m_settings.indirectDivisor, m_settings.specularDivisor,
         m_settings.areaShadowDivisor);
+    // Every pass that reads level 0 of a sparse grid looks its bricks up there (common/VoxelBricks.glsl);
+    // another context (the editor's widgets) may have used the unit since.
+    if (st.voxels.sparse && st.voxels.brickTable)
+        st.voxels.brickTable.bindUnit(BRICK_TABLE_UNIT);
 
     const CameraMatrices matrices = cameraMatrices(camera, float(width) / float(height), scene.bounds());
     FrameContext frame { *st.shaders, *st.scene, m_settings, st.versions, st.voxels, st.shadows, st.screen,
@@ -605,6 +657,8 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
     // The cone volume's box levels, where it keeps none of its own.
     if (level > 0 && texture == &v.coneRadiance() && v.inspectionMips)
         texture = &v.inspectionMips;
+    if (level == 0 && v.sparse)
+        return readSparseLevel0(v, *texture, size);
     return readTextureLevel(*texture, level, size);
 }
 
@@ -667,6 +721,11 @@ std::vector<BrickOccupancy> Renderer::brickOccupancy(int brickSize) const
                 ++o.occupiedVoxels;
             }
         o.occupiedBricks = std::size_t(std::count(occupied.begin(), occupied.end(), true));
+        if (v.sparse && brickSize == BrickPool::kBrickVoxels) {
+            o.storedBricks = v.bricks.allocatedBricks();
+            o.poolSlots
+                = std::size_t(v.poolBricks.x) * std::size_t(v.poolBricks.y) * std::size_t(v.poolBricks.z);
+        }
         grids.push_back(o);
     }
     return grids;

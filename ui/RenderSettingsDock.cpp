@@ -138,12 +138,15 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_gridLevels = new QComboBox;
     m_gridLevels->setObjectName(QStringLiteral("gridLevelsCombo"));
     m_gridLevels->addItem(tr("One grid"), 1);
+    // 0: one grid whose level 0 keeps only the bricks holding surface (voxel_mode=sparse).
+    m_gridLevels->addItem(tr("One grid, sparse"), 0);
     for (int levels = 2; levels <= 4; ++levels)
         m_gridLevels->addItem(tr("Clipmap, %1 levels").arg(levels), levels);
-    m_gridLevels->setToolTip(
-        tr("One grid around the scene, or a clipmap: nested grids of this resolution, each finer one half as "
-           "wide and following the camera, for finer voxels near it at one grid's memory per level "
-           "(voxel_mode, clip_levels)"));
+    m_gridLevels->setToolTip(tr(
+        "One grid around the scene; the same grid sparse, storing only the 8³ bricks that hold surface "
+        "(for fine grids around large, mostly empty scenes); or a clipmap: nested grids of this "
+        "resolution, each finer one half as wide and following the camera, for finer voxels near it at one "
+        "grid's memory per level (voxel_mode, clip_levels)"));
     m_conservative = makeCheck(tr("Conservative voxelization"),
         tr("Mark every voxel a triangle touches, so thin and oblique walls leave no holes"));
     m_conservative->setObjectName(QStringLiteral("conservativeCheck"));
@@ -347,7 +350,9 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
             return;
         const int levels = m_gridLevels->itemData(row).toInt();
         edit(m_gridLevels, [&](render::RenderSettings& s) {
-            s.voxelMode = levels > 1 ? render::VoxelMode::Clipmap : render::VoxelMode::Dense;
+            s.voxelMode = levels > 1 ? render::VoxelMode::Clipmap
+                : levels == 0        ? render::VoxelMode::Sparse
+                                     : render::VoxelMode::Dense;
             if (levels > 1)
                 s.clipLevels = levels;
         });
@@ -574,7 +579,8 @@ void RenderSettingsDock::load()
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
 
     selectIntItem(m_resolution, s.voxelResolution, QString::number(s.voxelResolution) + QStringLiteral("³"));
-    selectIntItem(m_gridLevels, s.gridLevels(), tr("Clipmap, %1 levels").arg(s.gridLevels()));
+    selectIntItem(m_gridLevels, s.voxelMode == render::VoxelMode::Sparse ? 0 : s.gridLevels(),
+        tr("Clipmap, %1 levels").arg(s.gridLevels()));
     m_conservative->setChecked(s.conservativeVoxelization);
     m_anisotropic->setChecked(s.anisotropicMips);
     m_dropBackFaces->setChecked(s.dropBackFaces);
@@ -606,7 +612,10 @@ void RenderSettingsDock::load()
     m_view->setCurrentIndex(m_view->findData(int(s.view)));
     if (m_budget->value() != s.voxelBudgetMiB)
         m_budget->setValue(s.voxelBudgetMiB);
-    m_memoryNeeded->setText(tr("needs %1").arg(memoryText(s.voxelMemoryBytes())));
+    // A sparse grid's pools depend on the scene's surfaces: the renderer counts them once made.
+    m_memoryNeeded->setText(s.voxelMode == render::VoxelMode::Sparse
+            ? tr("needs %1 and the bricks holding surface").arg(memoryText(s.voxelMemoryBytes()))
+            : tr("needs %1").arg(memoryText(s.voxelMemoryBytes())));
 
     m_fast->setChecked(sameSettings(s, presetSettings(Preset::Fast, s)));
     m_balanced->setChecked(sameSettings(s, presetSettings(Preset::Balanced, s)));

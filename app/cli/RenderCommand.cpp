@@ -390,12 +390,19 @@ int RenderCommand::run(int argc, char** argv)
             "  total %.2f ms GPU, voxel memory %.1f MiB (%.1f bytes per cell, %.0f per occupied voxel)\n",
             json["total_gpu_ms"].toDouble(), json["voxel_memory_bytes"].toDouble() / (1024.0 * 1024.0),
             json["voxel_bytes_per_cell"].toDouble(), json["voxel_bytes_per_occupied_voxel"].toDouble());
-        for (const render::BrickOccupancy& b : bricks)
+        for (const render::BrickOccupancy& b : bricks) {
             std::printf(
                 "  grid %d (%d^3): %zu of %zu bricks of %d^3 hold a surface (%.1f%%); a pool of them with "
                 "a one-voxel border would take %.1f%% of level 0\n",
                 b.grid, b.resolution, b.occupiedBricks, b.totalBricks, b.brickSize, 100.0 * b.share(),
                 100.0 * b.borderedPoolShare());
+            if (b.poolSlots > 0)
+                std::printf(
+                    "  grid %d is sparse: its pools store %zu bricks (%.1f%% of the grid's) in %zu slots, "
+                    "%.1f%% of a dense level 0\n",
+                    b.grid, b.storedBricks, 100.0 * double(b.storedBricks) / double(b.totalBricks),
+                    b.poolSlots, 100.0 * double(b.poolSlots) * 729.0 / (double(b.totalBricks) * 512.0));
+        }
     }
     return nonFinite ? 4 : 0;
 }

@@ -66,6 +66,10 @@ QJsonArray bricksToJson(const std::vector<render::BrickOccupancy>& bricks)
         o["total_bricks"] = double(b.totalBricks);
         o["share"] = b.share();
         o["bordered_pool_share"] = b.borderedPoolShare();
+        if (b.poolSlots > 0) {
+            o["stored_bricks"] = double(b.storedBricks);
+            o["pool_slots"] = double(b.poolSlots);
+        }
         list.append(o);
     }
     return list;

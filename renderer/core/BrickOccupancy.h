@@ -15,6 +15,11 @@ struct BrickOccupancy {
     std::size_t occupiedVoxels = 0;
     std::size_t occupiedBricks = 0;
     std::size_t totalBricks = 0;
+    /// voxel_mode=sparse, bricks of 8^3: the bricks its pools store (core/BrickPool: every brick a triangle
+    /// can reach, the border's and a moving object's past bricks included), and the pool's slots; 0
+    /// otherwise.
+    std::size_t storedBricks = 0;
+    std::size_t poolSlots = 0;
 
     double share() const { return totalBricks > 0 ? double(occupiedBricks) / double(totalBricks) : 0.0; }
     /**

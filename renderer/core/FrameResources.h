@@ -1,6 +1,7 @@
 #pragma once
 
 #include "common/DirectionalStack.glsl"
+#include "core/BrickPool.h"
 #include "core/OccupiedCellList.h"
 #include "core/ResourceTable.h"
 #include "core/VoxelGridFrame.h"
@@ -34,6 +35,23 @@ struct BounceProgress {
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */
 struct VoxelVolume {
     VoxelGridFrame frame;
+    /// voxel_mode=sparse: level 0 of albedo, normal, emission, radiance and bounced keeps only the bricks in
+    /// `bricks`, in pools of poolBricks bricks (common/VoxelBricks.glsl); brickTable (r32ui, a texel per
+    /// brick) names where each one is, and is bound at BRICK_TABLE_UNIT for every pass.
+    bool sparse = false;
+    BrickPool bricks = BrickPool(0);
+    glm::ivec3 poolBricks { 0 };
+    gl::Texture brickTable;
+    bool brickTableStale = false; ///< `bricks` gained bricks the table does not show yet
+    /** Level 0 of one of the grid's voxel textures: the grid itself, or its brick pool when sparse (which
+     * keeps no levels above: sparse grids need anisotropic mips). */
+    gl::TextureDesc level0(GLenum format, int levels = 1) const
+    {
+        if (!sparse)
+            return gl::TextureDesc::volume(format, frame.resolution, levels);
+        const glm::ivec3 texels = poolBricks * BrickPool::kBrickTexels;
+        return gl::TextureDesc::brickPool(format, texels.x, texels.y, texels.z).zeroedWhenMade();
+    }
     /// The voxelizer averages into these in place, as 32-bit words (common/VoxelWords.glsl).
     gl::Texture albedo; ///< rgba8: albedo, a = opacity (1 where any surface touches the voxel).
     gl::Texture normal; ///< rgba8 snorm: averaged unit normal (shorter where normals cancel).

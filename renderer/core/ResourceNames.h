@@ -18,6 +18,7 @@ inline constexpr const char* kBouncedDirectional = "bounced, directional (+x -x 
 inline constexpr const char* kBounceCells = "bounce cells";
 inline constexpr const char* kBounceCellsBack = "bounce cells, back faces";
 inline constexpr const char* kBounceCellNormals = "bounce cell normals";
+inline constexpr const char* kBrickTable = "brick table"; // a sparse grid's (common/VoxelBricks.glsl)
 inline constexpr const char* kIrradiance = "irradiance cache";
 inline constexpr const char* kIrradianceBack = "irradiance cache, back faces";
 inline constexpr const char* kIrradianceNormals = "irradiance cell normals";

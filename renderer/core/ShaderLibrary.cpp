@@ -119,13 +119,20 @@ std::string ShaderLibrary::preprocess(const std::string& path, const std::vector
     return out.str();
 }
 
-const gl::Program& ShaderLibrary::program(const ProgramDesc& desc) const
+const gl::Program& ShaderLibrary::program(const ProgramDesc& asked) const
 {
+    ProgramDesc desc = asked;
+    desc.defines.insert(desc.defines.end(), m_sharedDefines.begin(), m_sharedDefines.end());
     const std::string key = keyOf(desc);
     if (const auto it = m_programs.find(key); it != m_programs.end())
         return it->second.program;
     gl::Program built = build(desc);
     return m_programs.emplace(key, Kept { desc, std::move(built) }).first->second.program;
+}
+
+void ShaderLibrary::setSharedDefines(std::vector<std::string> defines)
+{
+    m_sharedDefines = std::move(defines);
 }
 
 std::vector<std::string> ShaderLibrary::reload(Lookup lookup)

@@ -37,6 +37,14 @@ public:
      * std::runtime_error naming the file when a stage is missing or does not compile.
      */
     const gl::Program& program(const ProgramDesc& desc) const;
+    /**
+     * Defines program() adds to every program from now on, such as SPARSE_VOXELS for a sparse grid
+     * (common/VoxelBricks.glsl): passes ask for the same programs in every storage mode, and those made
+     * before stay kept for when the mode comes back. Callers that keep a program across frames ask again
+     * after a change.
+     */
+    void setSharedDefines(std::vector<std::string> defines);
+    const std::vector<std::string>& sharedDefines() const { return m_sharedDefines; }
     /** A new program, not kept: for one-off tools and tests. Throws as program() does. */
     gl::Program build(const ProgramDesc& desc) const;
 
@@ -63,6 +71,7 @@ private:
     };
     // Keyed by stage files and defines; std::map so that references handed out stay put as it grows.
     mutable std::map<std::string, Kept> m_programs;
+    std::vector<std::string> m_sharedDefines;
 };
 
 } // namespace vct::render

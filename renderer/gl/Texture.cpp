@@ -69,7 +69,13 @@ Texture Texture::create(const TextureDesc& desc)
         t = create2DArray(desc.format, desc.width, desc.height, desc.depth);
         break;
     case Kind::Volume:
-        t = create3D(desc.format, desc.width, desc.levels);
+        if (desc.width == desc.height && desc.width == desc.depth) {
+            t = create3D(desc.format, desc.width, desc.levels);
+        } else { // a brick pool: one level, and its border empty space like a grid's
+            t = create3D(desc.format, desc.width, desc.height, desc.depth);
+            t.setWrap(GL_CLAMP_TO_BORDER);
+            t.setBorderColor(0, 0, 0, 0);
+        }
         break;
     case Kind::VolumeStack:
         t = create3DStack(desc.format, desc.width, desc.depth, desc.levels, desc.gapShift);

@@ -21,6 +21,11 @@ TextureDesc TextureDesc::volume(GLenum format, int size, int levels)
     return { Kind::Volume, format, size, size, size, levels };
 }
 
+TextureDesc TextureDesc::brickPool(GLenum format, int width, int height, int depth)
+{
+    return { Kind::Volume, format, width, height, depth, 1 };
+}
+
 TextureDesc TextureDesc::volumeStack(GLenum format, int size, int tiles, int levels, int gapShift)
 {
     return { Kind::VolumeStack, format, size, size, tiles, levels, gapShift };

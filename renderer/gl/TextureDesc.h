@@ -16,7 +16,7 @@ struct TextureDesc {
         None, ///< no texture: the pass needs none this frame
         Plane, ///< 2D
         PlaneArray, ///< 2D array, `depth` layers
-        Volume, ///< cubic 3D, clamped to a zero border (outside the grid is empty space)
+        Volume, ///< 3D, clamped to a zero border (outside the grid is empty space); cubic unless a brick pool
         VolumeStack, ///< `depth` cubic tiles stacked along z with empty gaps (Texture::create3DStack)
         CubeArray, ///< cube map array, `depth` cubes
     };
@@ -43,6 +43,8 @@ struct TextureDesc {
     static TextureDesc plane(GLenum format, int width, int height);
     static TextureDesc planeArray(GLenum format, int width, int height, int layers);
     static TextureDesc volume(GLenum format, int size, int levels = 1);
+    /** A sparse grid's brick pool (core/BrickPool): one level of width x height x depth texels. */
+    static TextureDesc brickPool(GLenum format, int width, int height, int depth);
     static TextureDesc volumeStack(GLenum format, int size, int tiles, int levels, int gapShift);
     static TextureDesc cubeArray(GLenum format, int size, int cubes);
     TextureDesc sampled(Sampling how) const;

@@ -1,5 +1,7 @@
 #include "passes/InjectLightPass.h"
 
+#include "core/Level0Clear.h"
+
 #include "core/FrameContext.h"
 #include "core/LightUniforms.h"
 #include "core/ResourceNames.h"
@@ -125,7 +127,7 @@ std::vector<TextureSlot> InjectLightPass::textures(const FrameContext& frame)
     // Level 0 alone when the bounced volume carries the levels cones read (MipmapPass). Only the area
     // lights' shadow cones read the opacity volume: scenes without them do not keep it.
     return { { resource::kRadiance, ResourceGroup::Voxels, &v.radiance,
-                 TextureDesc::volume(GL_RGBA16F, res, frame.shape.radianceLevels) },
+                 v.level0(GL_RGBA16F, frame.shape.radianceLevels) },
         { resource::kOpacity, ResourceGroup::Voxels, &v.opacity,
             frame.shape.areaLights > 0 ? TextureDesc::volume(GL_RGBA8, res, v.frame.levelCount())
                                        : TextureDesc {} } };
@@ -260,7 +262,9 @@ void InjectLightPass::execute(FrameContext& frame)
         for (const VoxelRegion& region : regions) {
             if (region.isEmpty())
                 continue;
-            m_occupied.build(frame.shaders, v.albedo, region, 1, &v.radiance);
+            clearLevel0(v, v.radiance, region);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+            m_occupied.build(frame.shaders, v.albedo, region, 1);
             program.use();
             m_occupied.dispatchOverCells();
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -81,7 +81,7 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
     const TextureDesc cellNormal
         = TextureDesc::volume(GL_RGBA8_SNORM, cells).sampled(TextureDesc::Sampling::Nearest);
     return { { kBounced, ResourceGroup::Voxels, &v.bounced,
-                 ifUsed(TextureDesc::volume(GL_RGBA16F, res, frame.shape.coneVolumeLevels)) },
+                 ifUsed(v.level0(GL_RGBA16F, frame.shape.coneVolumeLevels)) },
         { kBouncedDirectional, ResourceGroup::Voxels, &v.bouncedDirectional,
             frame.settings.anisotropicMips ? ifUsed(VoxelMipBuilder::directionalDesc(res)) : TextureDesc {} },
         { kBounceCells, ResourceGroup::Voxels, &v.bounceIrradiance, ifUsed(cell) },

@@ -2,9 +2,17 @@
 
 #include "core/FrameContext.h"
 #include "core/Frustum.h"
+#include "core/Level0Clear.h"
 #include "core/ResourceNames.h"
 #include "core/VolumeShift.h"
 
+#include "common/Bindings.glsl"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -72,23 +80,92 @@ PassDecision VoxelizePass::plan(const FrameContext& frame) const
 
 PassDeclaration VoxelizePass::declare() const
 {
-    return { {}, { resource::kAlbedo, resource::kNormal, resource::kEmission } };
+    return { {}, { resource::kAlbedo, resource::kNormal, resource::kEmission, resource::kBrickTable } };
+}
+
+void VoxelizePass::refuseOverBudget(const FrameContext& frame)
+{
+    // The settings could not count the pools before the bricks were known (RenderSettings::validate): the
+    // budget holds them now, before anything is allocated.
+    const VoxelVolume& v = frame.voxels;
+    const double grid = std::pow(double(v.bricks.bricksPerSide()), 3.0);
+    const double slots = double(v.poolBricks.x) * double(v.poolBricks.y) * double(v.poolBricks.z);
+    VoxelSceneNeeds needs { frame.scene.scene().hasEmissiveMaterial(), frame.shape.areaLights > 0,
+        frame.shape.lightSources, slots / grid };
+    const std::uint64_t bytes = frame.settings.voxelMemoryBytes(needs);
+    if (bytes <= std::uint64_t(frame.settings.voxelBudgetMiB) << 20)
+        return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+        "voxel_mode=sparse: the %zu bricks of 8^3 voxels the surfaces reach (%.1f%% of the grid) need %.2f "
+        "GiB "
+        "of voxel textures at voxel_res=%d, more than voxel_budget_mb=%d allows; lower voxel_res or raise "
+        "voxel_budget_mb if the GL has the memory",
+        v.bricks.allocatedBricks(), 100.0 * double(v.bricks.allocatedBricks()) / grid,
+        double(bytes) / double(1u << 30), v.frame.resolution, frame.settings.voxelBudgetMiB);
+    throw std::runtime_error(text);
+}
+
+void VoxelizePass::updateBricks(const FrameContext& frame)
+{
+    VoxelVolume& v = frame.voxels;
+    const int res = v.frame.resolution;
+    const Scene& scene = frame.scene.scene();
+    const bool whole = v.bricks.resolution() != res || !(m_brickGrid == v.frame)
+        || m_brickStatic != frame.versions.staticGeometry;
+    if (!whole && m_brickDynamic == frame.versions.dynamicVoxels())
+        return;
+    // The voxelizer reaches a voxel up to one voxel from a triangle (conservative enlargement and the depth
+    // spread), and a sparse grid must have storage wherever it writes (core/BrickPool).
+    const glm::mat4 toGrid = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / v.frame.voxelSize()))
+        * glm::translate(glm::mat4(1.0f), -v.frame.origin);
+    if (whole)
+        v.bricks = BrickPool(res);
+    int added = 0;
+    for (const Mesh& mesh : scene.meshes)
+        if (mesh.visible && (whole || mesh.dynamic))
+            added += v.bricks.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
+    // A moving object's new bricks take free slots, a quarter more than there are bricks when the pool is
+    // sized; the pool grows, and everything is made again, only when they run out. Bricks it left keep
+    // their slots until the next whole rebuild. A scene without dynamic meshes keeps no room.
+    const std::size_t needed = v.bricks.allocatedBricks() + 1;
+    const glm::ivec3 have = v.poolBricks;
+    if (whole || std::size_t(have.x) * std::size_t(have.y) * std::size_t(have.z) < needed) {
+        const std::size_t bricks = v.bricks.allocatedBricks();
+        const std::size_t room = bricks + (frame.scene.hasDynamicMeshes() ? bricks / 4 + 64 : 0);
+        const glm::ivec3 pool = BrickPool::poolBricksFor(std::min(room,
+            std::size_t(v.bricks.bricksPerSide()) * v.bricks.bricksPerSide() * v.bricks.bricksPerSide()));
+        if (pool == glm::ivec3(0))
+            throw std::runtime_error("voxel_mode=sparse: " + std::to_string(v.bricks.allocatedBricks())
+                + " bricks do not fit one pool texture; use a lower voxel_res or voxel_mode=clipmap");
+        v.poolBricks = pool;
+        refuseOverBudget(frame);
+    }
+    v.brickTableStale = v.brickTableStale || whole || added > 0;
+    m_brickGrid = v.frame;
+    m_brickStatic = frame.versions.staticGeometry;
+    m_brickDynamic = frame.versions.dynamicVoxels();
 }
 
 std::vector<TextureSlot> VoxelizePass::textures(const FrameContext& frame)
 {
     using gl::TextureDesc;
     VoxelVolume& v = frame.voxels;
-    const int res = v.frame.resolution;
     // Formats chosen by measured cost and error (docs/DESIGN.md, "Lean voxels"); common/VoxelWords.glsl.
     // Only scenes with emissive materials keep an emission volume. Made when a material starts to emit, it
     // holds no light yet anywhere, which is right: nothing emitted before, and the voxels of the material's
     // meshes are redone now.
     const bool emission = frame.scene.scene().hasEmissiveMaterial();
-    return { { resource::kAlbedo, ResourceGroup::Voxels, &v.albedo, TextureDesc::volume(GL_RGBA8, res) },
-        { resource::kNormal, ResourceGroup::Voxels, &v.normal, TextureDesc::volume(GL_RGBA8_SNORM, res) },
+    v.sparse = frame.settings.voxelMode == VoxelMode::Sparse;
+    if (v.sparse)
+        updateBricks(frame);
+    return { { resource::kAlbedo, ResourceGroup::Voxels, &v.albedo, v.level0(GL_RGBA8) },
+        { resource::kNormal, ResourceGroup::Voxels, &v.normal, v.level0(GL_RGBA8_SNORM) },
         { resource::kEmission, ResourceGroup::Voxels, &v.emission,
-            emission ? TextureDesc::volume(GL_R11F_G11F_B10F, res)
+            emission ? v.level0(GL_R11F_G11F_B10F).sampled(TextureDesc::Sampling::Nearest).zeroedWhenMade()
+                     : TextureDesc {} },
+        { resource::kBrickTable, ResourceGroup::Voxels, &v.brickTable,
+            v.sparse ? TextureDesc::volume(GL_R32UI, v.bricks.bricksPerSide())
                            .sampled(TextureDesc::Sampling::Nearest)
                            .zeroedWhenMade()
                      : TextureDesc {} } };
@@ -123,15 +200,10 @@ void VoxelizePass::ensureResources(FrameContext& frame)
 
 void VoxelizePass::clear(FrameContext& frame, const VoxelRegion& region)
 {
-    // The voxelizer averages into what the region holds, so it starts empty. A clear is far cheaper on
-    // llvmpipe than a shader writing three images per voxel.
+    // The voxelizer averages into what the region holds, so it starts empty.
     const VoxelVolume& v = frame.voxels;
-    const glm::ivec3 lo = region.lo, size = region.size();
-    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     for (const gl::Texture* t : { &v.albedo, &v.normal, &v.emission })
-        if (*t)
-            glClearTexSubImage(t->id(), 0, lo.x, lo.y, lo.z, size.x, size.y, size.z,
-                t == &v.emission ? GL_RGB : GL_RGBA, GL_FLOAT, zero);
+        clearLevel0(v, *t, region);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
@@ -141,10 +213,15 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
     const glm::ivec3 size = region.size();
+    // A sparse grid's voxels all lie in its bricks: a list as long as the region could not be afforded at
+    // 512^3.
+    std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z);
+    if (v.sparse)
+        capacity = std::min(capacity, v.bricks.allocatedBricks() * std::size_t(512));
     if (appendToTouched)
         touched.bindForAppending();
     else
-        touched.reset(std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z));
+        touched.reset(capacity);
     m_framebuffer.bind();
     glViewport(0, 0, res, res);
     glDisable(GL_DEPTH_TEST);
@@ -208,6 +285,15 @@ void VoxelizePass::execute(FrameContext& frame)
 {
     ensureResources(frame);
     VoxelVolume& v = frame.voxels;
+    if (v.sparse && v.brickTableStale) {
+        const std::vector<std::uint32_t> table = v.bricks.table(v.poolBricks);
+        const int side = v.bricks.bricksPerSide();
+        glTextureSubImage3D(
+            v.brickTable.id(), 0, 0, 0, 0, side, side, side, GL_RED_INTEGER, GL_UNSIGNED_INT, table.data());
+        v.brickTableStale = false;
+    }
+    if (v.sparse)
+        v.brickTable.bindUnit(BRICK_TABLE_UNIT);
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
     const std::optional<glm::ivec3> step = gridStep(frame);

@@ -32,6 +32,11 @@ public:
 
 private:
     void ensureResources(FrameContext& frame);
+    /** voxel_mode=sparse: allocates the bricks the meshes reach (all after a static change, the dynamic
+     * ones' new bricks after a move) and sizes the pool. */
+    void updateBricks(const FrameContext& frame);
+    /** Throws, naming the figures, when the sparse grid's pools would take the voxel textures over budget. */
+    static void refuseOverBudget(const FrameContext& frame);
     /** How many voxels the grid stepped by since the last rewrite when that is all that changed (a clip
      * level following the camera), or nothing. */
     std::optional<glm::ivec3> gridStep(const FrameContext& frame) const;
@@ -60,6 +65,9 @@ private:
     bool m_conservative = false; ///< the voxelization mode of the last full rebuild
     /// Where the grid was: a clip level follows the camera (core/ClipmapLayout) and is redone when it moves.
     VoxelGridFrame m_grid;
+    VoxelGridFrame m_brickGrid; ///< the grid the bricks were allocated for
+    std::uint64_t m_brickStatic = 0;
+    std::uint64_t m_brickDynamic = 0;
 };
 
 } // namespace vct::render

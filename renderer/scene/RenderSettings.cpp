@@ -162,17 +162,21 @@ const std::map<std::string, Field>& fields()
         view.print = [](const RenderSettings& s) { return std::string(debugViewName(s.view)); };
         t["view"] = view;
         Field mode;
-        mode.meaning
-            = "dense (one grid around the scene) or clipmap (clip_levels nested grids, the finer ones "
-              "centred on the camera)";
+        mode.meaning = "dense (one grid around the scene), sparse (the same grid storing only the 8^3 bricks "
+                       "that hold "
+                       "surface) or clipmap (clip_levels nested grids, the finer ones centred on the camera)";
         mode.parse = [](RenderSettings& s, const std::string& v) {
-            if (v != "dense" && v != "clipmap")
+            if (v != "dense" && v != "sparse" && v != "clipmap")
                 return false;
-            s.voxelMode = v == "dense" ? VoxelMode::Dense : VoxelMode::Clipmap;
+            s.voxelMode = v == "dense" ? VoxelMode::Dense
+                : v == "sparse"        ? VoxelMode::Sparse
+                                       : VoxelMode::Clipmap;
             return true;
         };
         mode.print = [](const RenderSettings& s) {
-            return std::string(s.voxelMode == VoxelMode::Dense ? "dense" : "clipmap");
+            return std::string(s.voxelMode == VoxelMode::Dense ? "dense"
+                    : s.voxelMode == VoxelMode::Sparse         ? "sparse"
+                                                               : "clipmap");
         };
         t["voxel_mode"] = mode;
         t["clip_levels"] = makeField(&RenderSettings::clipLevels,
@@ -232,6 +236,10 @@ std::string RenderSettings::validate() const
         return "voxel_res must be a power of two from 8 to 512, not " + std::to_string(voxelResolution);
     if (clipLevels < 2 || clipLevels > 6)
         return "clip_levels must be 2..6, not " + std::to_string(clipLevels);
+    if (voxelMode == VoxelMode::Sparse && !anisotropicMips)
+        return "voxel_mode=sparse needs anisotropic=on: the box mip chain of anisotropic=off is kept in "
+               "level 0's "
+               "texture, which a sparse grid splits into bricks";
     if (irradianceCellSize != 1 && irradianceCellSize != 2 && irradianceCellSize != 4)
         return "irradiance_cell must be 1, 2 or 4, not " + std::to_string(irradianceCellSize);
     if (bounces != kConvergedBounces && (bounces < 1 || bounces > kMaxBounces))

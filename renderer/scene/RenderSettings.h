@@ -27,6 +27,10 @@ enum class VoxelMode {
     /// one half as wide and centred on the camera (core/ClipmapLayout): voxelResolution * 2^(clipLevels - 1)
     /// cells per side near the camera for clipLevels times one grid's memory.
     Clipmap,
+    /// One grid like Dense whose level-0 textures keep only the bricks of 8^3 voxels geometry can reach
+    /// (core/BrickPool): empty space costs a table entry per brick. Needs anisotropic mips (a box mip chain
+    /// would live in level 0's texture).
+    Sparse,
 };
 
 /**

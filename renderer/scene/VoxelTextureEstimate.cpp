@@ -33,18 +33,23 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
 {
     std::vector<VoxelTextureEstimate> textures;
     const std::uint64_t n = std::uint64_t(settings.voxelResolution);
+    // A sparse grid keeps level 0 in a pool of bricks of 9^3 texels per 8^3 voxels (core/BrickPool).
+    const bool sparse = settings.voxelMode == VoxelMode::Sparse;
+    const auto level0 = [&](std::uint64_t bytes) {
+        return sparse ? std::uint64_t(double(bytes) * scene.brickShare * (729.0 / 512.0)) : bytes;
+    };
     // The voxelizer's averages (VoxelizePass): albedo rgba8, normal rgba8 snorm, and emission
     // (r11f_g11f_b10f) for a scene with emissive materials.
-    textures.push_back({ "albedo", chain(n, 4, false) });
-    textures.push_back({ "normal", chain(n, 4, false) });
+    textures.push_back({ "albedo", level0(chain(n, 4, false)) });
+    textures.push_back({ "normal", level0(chain(n, 4, false)) });
     if (scene.emission)
-        textures.push_back({ "emission", chain(n, 4, false) });
+        textures.push_back({ "emission", level0(chain(n, 4, false)) });
     // The volume cones trace, rgba16f: with anisotropic mips level 0 and six directional chains from level 1
     // (one stack of six tiles with five gaps between them), else its box mip chain. It is the bounced volume
     // when bounces are carried by the voxels (the first-bounce radiance then keeps level 0 only, as the
     // iteration's source), else the first-bounce radiance itself.
     const bool bounced = settings.bounces != 1 && scene.lightSources;
-    textures.push_back({ "radiance", chain(n, 8, !bounced && !settings.anisotropicMips) });
+    textures.push_back({ "radiance", level0(chain(n, 8, !bounced && !settings.anisotropicMips)) });
     if (scene.areaLights)
         textures.push_back({ "opacity", chain(n, 4, true) }); // rgba8 per axis, the area lights' shadow cones
     // Which cells above the occupied voxels the mip filter has listed, a bit per level (r32ui over level 1),
@@ -57,7 +62,7 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
                                      : "radiance, directional (+x -x +y -y +z -z)",
             stack.bytes(8) });
     if (bounced) {
-        textures.push_back({ "bounced", chain(n, 8, !settings.anisotropicMips) });
+        textures.push_back({ "bounced", level0(chain(n, 8, !settings.anisotropicMips)) });
         // The bounce gather's cells: front and back rgba16f, the normal rgba8 snorm.
         const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(settings.bounceCellSize), 1);
         textures.push_back({ "bounce cells", chain(cells, 8, false) });

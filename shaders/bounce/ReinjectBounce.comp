@@ -8,6 +8,7 @@
 #extension GL_NV_shader_atomic_float : require
 #include "bounce/BounceSums.glsl"
 #include "common/OccupiedCells.glsl"
+#include "common/VoxelBricks.glsl"
 #define SUMS_BINDING 1
 #include "common/GroupSums.glsl"
 
@@ -51,10 +52,11 @@ void main()
     bool listed = occupiedCell(voxel);
     float change = 0.0, total = 0.0;
     if (listed) {
-        vec4 albedo = texelFetch(uAlbedo, voxel, 0);
-        vec4 result = texelFetch(uDirect, voxel, 0);
+        ivec3 texel = voxelLoadTexel(voxel);
+        vec4 albedo = texelFetch(uAlbedo, texel, 0);
+        vec4 result = texelFetch(uDirect, texel, 0);
         if (albedo.a > 0.0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
-            vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
+            vec3 normalSum = texelFetch(uNormal, texel, 0).xyz;
             float normalLength = length(normalSum);
             bool faced = normalLength >= 0.5;
             vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
@@ -64,7 +66,7 @@ void main()
             result.rgb += albedo.rgb * gathered * albedo.a;
         }
         // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
-        vec3 previous = uCompare ? imageLoad(uBounced, voxel).rgb : texelFetch(uDirect, voxel, 0).rgb;
+        vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : texelFetch(uDirect, texel, 0).rgb;
         change = dot(abs(result.rgb - previous), vec3(1.0));
         total = dot(result.rgb, vec3(1.0));
         // Where bounce/DecideTail.comp found the tail q / (1 - q) trustworthy, store L + tail * change: the limit
@@ -72,7 +74,7 @@ void main()
         float tail = imageLoad(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_TAIL, 0)).r;
         if (tail > 0.0)
             result.rgb = max(result.rgb + tail * (result.rgb - previous), vec3(0.0));
-        imageStore(uBounced, voxel, result);
+        STORE_VOXEL(uBounced, voxel, result);
     }
     addGroupSums(change, total, BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_VOXEL_CHANGE);
 }

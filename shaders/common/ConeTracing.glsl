@@ -8,6 +8,7 @@
 #ifndef COUNT_FETCHES
 #define COUNT_FETCHES(n)
 #endif
+#include "common/VoxelBricks.glsl"
 
 layout(binding = 5) uniform sampler3D uRadiance;
 #ifdef ANISOTROPIC
@@ -73,7 +74,7 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
     // (five fetches a step where four do; the cone loop ~20% faster). A cone's march goes by phases instead
     // (marchPhase), each a loop of its own that fetches only what its footprints need.
     COUNT_FETCHES(4);
-    vec4 finest = textureLod(radiance, uvw, 0.0);
+    vec4 finest = sampleLevel0(radiance, uvw);
     vec3 w = dir * dir; // sums to one for a unit direction
     float l = max(level - 1.0, 0.0);
     vec4 directional = w.x * sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l)
@@ -106,7 +107,7 @@ vec4 samplePhase(int phase, sampler3D radiance TOWARDS_PARAM, vec3 uvw, float le
 #ifdef ANISOTROPIC
     if (phase == kPhaseFinest) {
         COUNT_FETCHES(1);
-        return textureLod(radiance, uvw, 0.0);
+        return sampleLevel0(radiance, uvw);
     }
     if (phase == kPhaseCoarse) {
         COUNT_FETCHES(3);

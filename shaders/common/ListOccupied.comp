@@ -3,6 +3,7 @@
 // holds lighting or cone-tracing code about four times slower per invocation even where that code is skipped
 // (docs/DESIGN.md, "Measured choices"), and most of a grid is empty.
 #include "common/AppendCell.glsl"
+#include "common/VoxelBricks.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 8) in;
 
@@ -21,7 +22,7 @@ void main()
     for (int z = 0; z < uCellSize && !occupied; ++z)
         for (int y = 0; y < uCellSize && !occupied; ++y)
             for (int x = 0; x < uCellSize && !occupied; ++x)
-                occupied = texelFetch(uAlbedo, cell * uCellSize + ivec3(x, y, z), 0).a > 0.0;
+                occupied = texelFetch(uAlbedo, voxelLoadTexel(cell * uCellSize + ivec3(x, y, z)), 0).a > 0.0;
     if (occupied)
         appendCell(cell);
 }

@@ -5,6 +5,7 @@
 #include "common/AreaLights.glsl"
 
 #include "common/OccupiedCells.glsl"
+#include "common/VoxelBricks.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -33,8 +34,9 @@ void main()
     ivec3 voxel;
     if (!occupiedCell(voxel))
         return;
-    vec4 albedo = texelFetch(uAlbedo, voxel, 0);
-    vec3 normalSum = texelFetch(uNormal, voxel, 0).xyz;
+    ivec3 texel = voxelLoadTexel(voxel);
+    vec4 albedo = texelFetch(uAlbedo, texel, 0);
+    vec3 normalSum = texelFetch(uNormal, texel, 0).xyz;
     float normalLength = length(normalSum);
     vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
     vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
@@ -69,6 +71,6 @@ void main()
         }
     }
     if (uEmissionEnabled)
-        radiance += texelFetch(uEmission, voxel, 0).rgb;
-    imageStore(uRadiance, voxel, vec4(radiance * albedo.a, albedo.a));
+        radiance += texelFetch(uEmission, texel, 0).rgb;
+    STORE_VOXEL(uRadiance, voxel, vec4(radiance * albedo.a, albedo.a));
 }

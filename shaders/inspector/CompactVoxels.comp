@@ -7,6 +7,8 @@
 #define CHANNEL_NORMAL 3
 #define CHANNEL_EMISSION 4
 
+#include "common/VoxelBricks.glsl"
+
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = 0) uniform sampler3D uRadiance;
@@ -43,7 +45,7 @@ void main()
         for (int z = 0; z < block; ++z)
             for (int y = 0; y < block; ++y)
                 for (int x = 0; x < block; ++x) {
-                    ivec3 c = voxel * block + ivec3(x, y, z);
+                    ivec3 c = voxelLoadTexel(voxel * block + ivec3(x, y, z));
                     float a = texelFetch(uAlbedo, c, 0).a;
                     if (a > 0.0) {
                         sum += texelFetch(uChannel, c, 0);

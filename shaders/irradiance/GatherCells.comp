@@ -61,7 +61,7 @@ float cellOccupancy(ivec3 cell, ivec3 offset)
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x)
-                occupied += texelFetch(uAlbedo, first + ivec3(x, y, z), 0).a > 0.0 ? 1.0 : 0.0;
+                occupied += texelFetch(uAlbedo, voxelLoadTexel(first + ivec3(x, y, z)), 0).a > 0.0 ? 1.0 : 0.0;
     return occupied / float(uCellSize * uCellSize * uCellSize);
 }
 
@@ -97,7 +97,7 @@ void gatherCell(ivec3 cell)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x) {
                 ivec3 voxel = cell * uCellSize + ivec3(x, y, z);
-                float occupancy = texelFetch(uAlbedo, voxel, 0).a > 0.0 ? 1.0 : 0.0;
+                float occupancy = texelFetch(uAlbedo, voxelLoadTexel(voxel), 0).a > 0.0 ? 1.0 : 0.0;
                 positionSum += occupancy * (vec3(voxel) + 0.5);
                 occupied += occupancy;
             }
@@ -109,9 +109,10 @@ void gatherCell(ivec3 cell)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x) {
                 ivec3 voxel = cell * uCellSize + ivec3(x, y, z);
-                if (texelFetch(uAlbedo, voxel, 0).a <= 0.0)
+                ivec3 texel = voxelLoadTexel(voxel);
+                if (texelFetch(uAlbedo, texel, 0).a <= 0.0)
                     continue;
-                vec3 n = texelFetch(uNormal, voxel, 0).xyz;
+                vec3 n = texelFetch(uNormal, texel, 0).xyz;
                 // A voxel whose faces cancel adds (almost) nothing to the direction, but still counts.
                 normalSum += dot(n, n) > 1e-8 ? normalize(n) * min(length(n), 1.0) : vec3(0.0);
                 positionSum += vec3(voxel) + 0.5;

@@ -12,6 +12,7 @@ layout(local_size_x = 64) in;
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 8) in;
 #endif
 #include "common/AppendCell.glsl"
+#include "common/VoxelBricks.glsl"
 
 layout(binding = 0) uniform sampler3D uAlbedo; // a = opacity: a voxel holds a surface when it is above zero
 layout(r32ui, binding = 3) uniform coherent uimage3D uRequested;
@@ -40,7 +41,7 @@ void main()
     for (int z = 0; z < uCellSize && !occupied; ++z)
         for (int y = 0; y < uCellSize && !occupied; ++y)
             for (int x = 0; x < uCellSize && !occupied; ++x)
-                occupied = texelFetch(uAlbedo, cell * uCellSize + ivec3(x, y, z), 0).a > 0.0;
+                occupied = texelFetch(uAlbedo, voxelLoadTexel(cell * uCellSize + ivec3(x, y, z)), 0).a > 0.0;
     if (occupied)
         appendCell(cell);
 }

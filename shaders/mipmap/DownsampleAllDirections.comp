@@ -4,6 +4,7 @@
 // Over the listed cells only (common/OccupiedCells.glsl, VoxelMipBuilder); the level is cleared first.
 #include "common/DirectionalStack.glsl"
 #include "common/OccupiedCells.glsl"
+#include "common/VoxelBricks.glsl"
 
 layout(local_size_x = 64) in;
 uniform int uTileStride; // texels from one tile's start to the next at the level written
@@ -59,8 +60,10 @@ void main()
     ivec3 voxel;
     if (!occupiedCell(voxel))
         return;
+    // A parent's eight children lie in one brick of a sparse grid.
+    ivec3 first = voxelLoadTexel(voxel * 2);
     for (int i = 0; i < 8; ++i) {
-        ivec3 child = voxel * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        ivec3 child = first + ivec3(i & 1, (i >> 1) & 1, i >> 2);
         children[i] = texelFetch(uSource, child, 0);
 #ifdef DROP_BACK_FACES
         normals[i] = texelFetch(uNormal, child, 0).xyz;

@@ -2,6 +2,7 @@
 // opacity 1, and normal's becomes 0, which samplers read as w = 0. The emission word needs nothing. The
 // voxelizer listed these voxels as it reached them.
 #include "common/OccupiedCells.glsl"
+#include "common/VoxelBricks.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -13,6 +14,7 @@ void main()
     ivec3 voxel;
     if (!occupiedCell(voxel))
         return;
-    imageAtomicOr(uAlbedoWords, voxel, 0xFF000000u);
-    imageAtomicAnd(uNormalWords, voxel, 0x00FFFFFFu);
+    ivec3 texel = voxelStoreTexel(voxel);
+    imageAtomicOr(uAlbedoWords, texel, 0xFF000000u);
+    imageAtomicAnd(uNormalWords, texel, 0x00FFFFFFu);
 }

@@ -6,6 +6,7 @@
 // alone unless it holds light, so most fragments skip its compare-and-swap.
 #include "common/VoxelWords.glsl"
 #include "common/AppendCell.glsl"
+#include "common/VoxelBricks.glsl"
 
 in vec3 gNormal;
 in vec2 gUv;
@@ -107,13 +108,18 @@ void main()
         ivec3 voxel = unswizzle(ivec3(ivec2(gl_FragCoord.xy), z), gAxis);
         if (any(lessThan(voxel, uRegionLo)) || any(greaterThanEqual(voxel, uRegionHi)))
             continue;
-        int before = addAlbedo(voxel, albedo);
+        // A sparse grid's bricks hold every voxel a triangle can reach (core/BrickPool), so none is lost
+        // here; tst_SparseVoxels compares the voxels listed with a dense grid's.
+        ivec3 texel = voxelStoreTexel(voxel);
+        if (texel.x < 0)
+            continue;
+        int before = addAlbedo(texel, albedo);
         if (before < 0)
             continue;
         if (before == 0)
             appendCell(voxel);
-        addNormal(voxel, normal);
+        addNormal(texel, normal);
         if (uEmissionVolume)
-            addEmission(voxel, emission, before);
+            addEmission(texel, emission, before);
     }
 }

@@ -32,17 +32,7 @@ void DynamicObjectTest::initTestCase()
 
 render::Scene DynamicObjectTest::scene() const
 {
-    render::Scene s;
-    s.materials.push_back({});
-    s.meshes.push_back(
-        test::makeTriangles(test::quad({ 1, 0.5f, 15 }, { 15, 0.5f, 15 }, { 15, 0.5f, 1 }, { 1, 0.5f, 1 })));
-    // A small horizontal plate, dynamic, at y = 4.5 over x,z in [3.2, 4.8].
-    render::Mesh plate = test::makeTriangles(
-        test::quad({ 3.2f, 4.5f, 4.8f }, { 4.8f, 4.5f, 4.8f }, { 4.8f, 4.5f, 3.2f }, { 3.2f, 4.5f, 3.2f }));
-    plate.dynamic = true;
-    s.meshes.push_back(plate);
-    s.pointLights.push_back({ { 8, 12, 8 }, glm::vec3(50.0f), true });
-    return s;
+    return test::floorAndDynamicPlate();
 }
 
 float DynamicObjectTest::occupancy(int x, int y, int z)

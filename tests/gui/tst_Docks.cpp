@@ -387,6 +387,11 @@ void TstDocks::renderSettingsResolutionCombo()
     document->undoStack()->undo();
     QCOMPARE(document->state().settings.voxelMode, render::VoxelMode::Dense);
     QCOMPARE(grids->currentData().toInt(), 1);
+    grids->setCurrentIndex(grids->findData(0)); // one grid, sparse
+    QCOMPARE(document->state().settings.voxelMode, render::VoxelMode::Sparse);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().settings.voxelMode, render::VoxelMode::Dense);
+    QCOMPARE(grids->currentData().toInt(), 1);
 
     // "auto" (the spin box's minimum) stores a negative distance.
     auto* distance = child<QDoubleSpinBox>(&dock, "maxDistance");

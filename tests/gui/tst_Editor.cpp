@@ -199,6 +199,18 @@ void EditorTest::inspectorShowsEachClipmapLevel()
     QVERIFY(waitForFrame());
     QCOMPARE(inspector->gridBox()->count(), 1);
     QCOMPARE(m_window->viewport()->inspector().grid, 0);
+    // The same grid sparse (voxel_mode=sparse) shows the same voxels: its cubes come from the bricks.
+    QVERIFY(waitForFrame());
+    const std::size_t dense = m_window->viewport()->lastCubeCount();
+    QVERIFY(dense > 0);
+    grids->setCurrentIndex(grids->findData(0));
+    QCOMPARE(m_window->document()->state().settings.voxelMode, render::VoxelMode::Sparse);
+    QVERIFY(waitForFrame());
+    QVERIFY(waitForFrame());
+    QCOMPARE(m_window->viewport()->lastCubeCount(), dense);
+    grids->setCurrentIndex(grids->findData(1));
+    QCOMPARE(m_window->document()->state().settings.voxelMode, render::VoxelMode::Dense);
+    QVERIFY(waitForFrame());
     inspector->enabledBox()->setChecked(false);
 }
 

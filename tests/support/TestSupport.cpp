@@ -52,6 +52,20 @@ GlTestContext GlTestContext::create(const std::string& backend)
     return result;
 }
 
+render::Scene floorAndDynamicPlate()
+{
+    render::Scene s;
+    s.materials.push_back({});
+    s.meshes.push_back(
+        makeTriangles(quad({ 1, 0.5f, 15 }, { 15, 0.5f, 15 }, { 15, 0.5f, 1 }, { 1, 0.5f, 1 })));
+    render::Mesh plate = makeTriangles(
+        quad({ 3.2f, 4.5f, 4.8f }, { 4.8f, 4.5f, 4.8f }, { 4.8f, 4.5f, 3.2f }, { 3.2f, 4.5f, 3.2f }));
+    plate.dynamic = true;
+    s.meshes.push_back(plate);
+    s.pointLights.push_back({ { 8, 12, 8 }, glm::vec3(50.0f), true });
+    return s;
+}
+
 render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material)
 {
     render::Mesh mesh;

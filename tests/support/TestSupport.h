@@ -4,6 +4,7 @@
 #include "scene/Aabb.h"
 #include "scene/Camera.h"
 #include "scene/Mesh.h"
+#include "scene/Scene.h"
 
 #include <QByteArray>
 #include <QString>
@@ -23,6 +24,11 @@ QString outputDir();
 render::Mesh makeTriangles(const std::vector<glm::vec3>& positions, int material = 0);
 /** A quad (two triangles) with corners a, b, c, d counter-clockwise seen from the front. */
 std::vector<glm::vec3> quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+/**
+ * A 14 m floor at y = 0.5 over x, z in [1, 15] (mesh 0), a small dynamic plate at y = 4.5 over x, z in
+ * [3.2, 4.8] (mesh 1) and a point light above: the scene of the moving-object tests.
+ */
+render::Scene floorAndDynamicPlate();
 /** The box spanning two corners. */
 render::Aabb box(glm::vec3 lo, glm::vec3 hi);
 /** The pixel of a size x size RadianceImage (rows top to bottom) that camera sees world in. */
