@@ -125,14 +125,21 @@ void VoxelizePass::updateBricks(const FrameContext& frame)
     for (const Mesh& mesh : scene.meshes)
         if (mesh.visible && (whole || mesh.dynamic))
             added += v.bricks.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
-    // A moving object's new bricks take free slots, a quarter more than there are bricks when the pool is
-    // sized; the pool grows, and everything is made again, only when they run out. Bricks it left keep
-    // their slots until the next whole rebuild. A scene without dynamic meshes keeps no room.
+    // A moving object's new bricks take free slots: room for twice the bricks the moving objects take where
+    // they are when the pool is sized, so that a drag over their own size fits; the pool grows, and
+    // everything is made again, only when the room runs out. Bricks an object left keep their slots until the
+    // next whole rebuild. Room in proportion to the whole scene's bricks would cost the Sponza at 512^3 a
+    // fifth of its pools for a statue.
     const std::size_t needed = v.bricks.allocatedBricks() + 1;
     const glm::ivec3 have = v.poolBricks;
     if (whole || std::size_t(have.x) * std::size_t(have.y) * std::size_t(have.z) < needed) {
+        BrickPool moving(res);
+        for (const Mesh& mesh : scene.meshes)
+            if (mesh.visible && mesh.dynamic)
+                moving.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
         const std::size_t bricks = v.bricks.allocatedBricks();
-        const std::size_t room = bricks + (frame.scene.hasDynamicMeshes() ? bricks / 4 + 64 : 0);
+        const std::size_t room
+            = bricks + (frame.scene.hasDynamicMeshes() ? 2 * moving.allocatedBricks() + 64 : 0);
         const glm::ivec3 pool = BrickPool::poolBricksFor(std::min(room,
             std::size_t(v.bricks.bricksPerSide()) * v.bricks.bricksPerSide() * v.bricks.bricksPerSide()));
         if (pool == glm::ivec3(0))
