@@ -478,6 +478,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         stats.occupiedVoxels += v->occupiedCount;
     }
     stats.gridLevels = m_settings.gridLevels();
+    if (st.voxels.sparse) {
+        stats.storedBricks = st.voxels.bricks.allocatedBricks();
+        stats.gridBricks = std::size_t(st.voxels.bricks.bricksPerSide())
+            * std::size_t(st.voxels.bricks.bricksPerSide()) * std::size_t(st.voxels.bricks.bricksPerSide());
+    }
     stats.width = width;
     stats.height = height;
     stats.voxelResolution = st.voxels.frame.resolution;

@@ -129,7 +129,13 @@ void StatsDock::showStats(const render::FrameStats& stats)
                                   .arg(stats.voxelBytesPerCell(), 0, 'f', 1)
                                   .arg(stats.voxelBytesPerOccupiedVoxel(), 0, 'f', 0));
     m_memoryPerVoxel->setToolTip(tr("%1 of the grid's cells hold a surface").arg(stats.occupiedVoxels));
-    if (stats.voxelResolution > 0)
+    if (stats.voxelResolution > 0 && stats.gridBricks > 0)
+        m_grid->setText(tr("%1, voxel %2 cm, sparse: %3 of %4 bricks stored")
+                            .arg(QString::number(stats.voxelResolution) + QStringLiteral("³"))
+                            .arg(double(stats.voxelSize) * 100.0, 0, 'f', 2)
+                            .arg(stats.storedBricks)
+                            .arg(stats.gridBricks));
+    else if (stats.voxelResolution > 0)
         m_grid->setText(tr("%1, voxel %2 cm")
                             .arg(QString::number(stats.voxelResolution) + QStringLiteral("³"))
                             .arg(double(stats.voxelSize) * 100.0, 0, 'f', 2));

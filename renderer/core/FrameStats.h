@@ -36,6 +36,9 @@ struct FrameStats {
     int width = 0, height = 0;
     int voxelResolution = 0;
     int gridLevels = 1; ///< a clipmap's levels (RenderSettings::voxelMode), else 1
+    /// voxel_mode=sparse: the bricks of 8^3 voxels its pools store, of how many the grid has; 0 otherwise.
+    std::size_t storedBricks = 0;
+    std::size_t gridBricks = 0;
     float voxelSize = 0.0f; ///< metres
     /// The GPU times are those of the previous frame's passes (Pipeline::TimingReadback::PreviousFrame):
     /// reading this frame's would stall the CPU until the frame is done.

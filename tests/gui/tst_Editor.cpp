@@ -6,6 +6,7 @@
 #include "ui/MaterialDock.h"
 #include "ui/NonFiniteOverlay.h"
 #include "ui/RenderSettingsDock.h"
+#include "ui/StatsDock.h"
 #include "ui/ViewportOverlay.h"
 #include "ui/ViewportWidget.h"
 #include "ui/VoxelInspectorDock.h"
@@ -208,6 +209,9 @@ void EditorTest::inspectorShowsEachClipmapLevel()
     QVERIFY(waitForFrame());
     QVERIFY(waitForFrame());
     QCOMPARE(m_window->viewport()->lastCubeCount(), dense);
+    const auto* gridLabel = m_window->statsDock()->findChild<QLabel*>(QStringLiteral("voxelGridLabel"));
+    QVERIFY(gridLabel);
+    QVERIFY2(gridLabel->text().contains(QStringLiteral("bricks stored")), qPrintable(gridLabel->text()));
     grids->setCurrentIndex(grids->findData(1));
     QCOMPARE(m_window->document()->state().settings.voxelMode, render::VoxelMode::Dense);
     QVERIFY(waitForFrame());
