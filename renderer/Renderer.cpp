@@ -190,32 +190,53 @@ std::vector<float> readTextureLevel(const gl::Texture& texture, int level, int& 
 }
 
 // A sparse grid's level 0 as a dense grid's reads (common/VoxelBricks.glsl): each voxel from its brick's
-// place in the pool, zero where there is none.
+// place in the pool, and where there is none what a dense texture holds there (zero, alpha 1 for a format
+// without alpha). The pool is read a layer of bricks at a time, so that no one read is larger than GL's
+// GLsizei counts.
 std::vector<float> readSparseLevel0(const VoxelVolume& v, const gl::Texture& pool, int& size)
 {
-    const std::vector<float> texels = [&] {
-        std::vector<float> data(std::size_t(pool.width()) * pool.height() * pool.depth() * 4);
-        glGetTextureImage(pool.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
-        return data;
-    }();
     size = v.frame.resolution;
+    const float emptyAlpha = pool.format() == GL_R11F_G11F_B10F ? 1.0f : 0.0f;
     std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4, 0.0f);
-    for (int z = 0; z < size; ++z)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const glm::ivec3 voxel(x, y, z);
-                const std::uint32_t slot = v.bricks.slot(voxel / BrickPool::kBrickVoxels);
-                if (slot == 0)
-                    continue;
-                const glm::ivec3 t = BrickPool::slotPosition(slot, v.poolBricks) * BrickPool::kBrickTexels
-                    + voxel % BrickPool::kBrickVoxels;
-                const std::size_t from = ((std::size_t(t.z) * pool.height() + std::size_t(t.y)) * pool.width()
-                                             + std::size_t(t.x))
-                    * 4;
-                const std::size_t to = ((std::size_t(z) * size + std::size_t(y)) * size + std::size_t(x)) * 4;
-                std::copy(texels.begin() + std::ptrdiff_t(from), texels.begin() + std::ptrdiff_t(from + 4),
-                    data.begin() + std::ptrdiff_t(to));
-            }
+    for (std::size_t i = 3; i < data.size(); i += 4)
+        data[i] = emptyAlpha;
+    constexpr int kTexels = BrickPool::kBrickTexels;
+    const std::size_t layerTexels = std::size_t(pool.width()) * std::size_t(pool.height()) * kTexels;
+    std::vector<float> layer(layerTexels * 4);
+    for (int brickZ = 0; brickZ < v.poolBricks.z; ++brickZ) {
+        glGetTextureSubImage(pool.id(), 0, 0, 0, brickZ * kTexels, pool.width(), pool.height(), kTexels,
+            GL_RGBA, GL_FLOAT, GLsizei(layer.size() * sizeof(float)), layer.data());
+        const int bricks = v.bricks.bricksPerSide();
+        for (int bz = 0; bz < bricks; ++bz)
+            for (int by = 0; by < bricks; ++by)
+                for (int bx = 0; bx < bricks; ++bx) {
+                    const glm::ivec3 brick(bx, by, bz);
+                    const std::uint32_t slot = v.bricks.slot(brick);
+                    const glm::ivec3 corner = BrickPool::slotPosition(slot, v.poolBricks);
+                    if (slot == 0 || corner.z != brickZ)
+                        continue;
+                    for (int z = 0; z < BrickPool::kBrickVoxels; ++z)
+                        for (int y = 0; y < BrickPool::kBrickVoxels; ++y)
+                            for (int x = 0; x < BrickPool::kBrickVoxels; ++x) {
+                                const glm::ivec3 voxel
+                                    = brick * BrickPool::kBrickVoxels + glm::ivec3(x, y, z);
+                                if (glm::any(glm::greaterThanEqual(voxel, glm::ivec3(size))))
+                                    continue;
+                                const std::size_t from = ((std::size_t(z) * std::size_t(pool.height())
+                                                              + std::size_t(corner.y * kTexels + y))
+                                                                 * std::size_t(pool.width())
+                                                             + std::size_t(corner.x * kTexels + x))
+                                    * 4;
+                                const std::size_t to
+                                    = ((std::size_t(voxel.z) * size + std::size_t(voxel.y)) * size
+                                          + std::size_t(voxel.x))
+                                    * 4;
+                                std::copy(layer.begin() + std::ptrdiff_t(from),
+                                    layer.begin() + std::ptrdiff_t(from + 4),
+                                    data.begin() + std::ptrdiff_t(to));
+                            }
+                }
+    }
     return data;
 }
 

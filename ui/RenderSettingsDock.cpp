@@ -432,9 +432,12 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     s.bounceCellSize = 4;
     switch (preset) {
     case Preset::Fast:
-        // A coarse grid with isotropic mips: the cheapest full frame that is still on the frontier.
+        // A coarse grid with isotropic mips: the cheapest full frame that is still on the frontier. Dense, as
+        // isotropic mips need (a 64^3 grid gains little from bricks).
         s.voxelResolution = 64;
         s.anisotropicMips = false;
+        if (s.voxelMode == render::VoxelMode::Sparse)
+            s.voxelMode = render::VoxelMode::Dense;
         // Box mips leak most of what narrower cones would add: fewer, wider cones measure the same, for less.
         s.diffuseConeCount = 5;
         s.diffuseApertureDeg = 30.0f;
@@ -583,6 +586,8 @@ void RenderSettingsDock::load()
         tr("Clipmap, %1 levels").arg(s.gridLevels()));
     m_conservative->setChecked(s.conservativeVoxelization);
     m_anisotropic->setChecked(s.anisotropicMips);
+    // A sparse grid has no box mip chain to fall back to (voxel_mode=sparse needs anisotropic=on).
+    m_anisotropic->setEnabled(s.voxelMode != render::VoxelMode::Sparse);
     m_dropBackFaces->setChecked(s.dropBackFaces);
     m_dropBackFaces->setEnabled(s.anisotropicMips); // only the directional chains know which way cones go
     selectIntItem(m_bounces, s.bounces, QString::number(s.bounces));

@@ -74,7 +74,7 @@ private:
     QPushButton* m_balanced = nullptr;
     QPushButton* m_high = nullptr;
     QComboBox* m_resolution = nullptr;
-    QComboBox* m_gridLevels = nullptr; ///< a dense grid (1) or a clipmap's levels
+    QComboBox* m_gridLevels = nullptr; ///< a dense grid (1), a sparse one (0) or a clipmap's levels (2..)
     QCheckBox* m_conservative = nullptr;
     QCheckBox* m_anisotropic = nullptr;
     QCheckBox* m_dropBackFaces = nullptr;

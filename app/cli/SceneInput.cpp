@@ -47,16 +47,15 @@ bool loadSceneInput(const QString& spec, render::Scene& scene, render::RenderSet
 
 QString applySettingAssignments(const QStringList& assignments, render::RenderSettings& settings)
 {
+    // Validated together: a setting may be valid only with another one given after it.
+    std::vector<std::pair<std::string, std::string>> pairs;
     for (const QString& assignment : assignments) {
         const int eq = assignment.indexOf(QLatin1Char('='));
         if (eq <= 0)
             return QStringLiteral("--set expects key=value, got '%1'").arg(assignment);
-        const std::string problem
-            = settings.set(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
-        if (!problem.empty())
-            return QString::fromStdString(problem);
+        pairs.emplace_back(assignment.left(eq).toStdString(), assignment.mid(eq + 1).toStdString());
     }
-    return {};
+    return QString::fromStdString(settings.setAll(pairs));
 }
 
 bool resolveViewInput(const QString& lightsPath, const QString& cameraPath, const doc::SceneLoadInfo& info,

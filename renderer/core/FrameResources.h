@@ -43,6 +43,9 @@ struct VoxelVolume {
     glm::ivec3 poolBricks { 0 };
     gl::Texture brickTable;
     bool brickTableStale = false; ///< `bricks` gained bricks the table does not show yet
+    /// Grows when every brick was allocated again, in another order: light kept from before is in the wrong
+    /// places (a moving object's new bricks keep the layout).
+    std::uint64_t brickLayout = 0;
     /** Level 0 of one of the grid's voxel textures: the grid itself, or its brick pool when sparse (which
      * keeps no levels above: sparse grids need anisotropic mips). */
     gl::TextureDesc level0(GLenum format, int levels = 1) const

@@ -27,7 +27,8 @@ void OccupiedCellList::reset(std::size_t capacity, unsigned binding)
 {
     if (!m_dispatch)
         m_dispatch = gl::Buffer(4 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(std::uint32_t);
+    const std::size_t bytes
+        = std::max<std::size_t>(std::min(capacity, m_capacityCap), 1) * sizeof(std::uint32_t);
     if (m_cells.size() < bytes)
         m_cells = gl::Buffer(bytes, nullptr, 0);
     const std::uint32_t empty[4] = { 0, 1, 1, 0 };

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace vct::render {
@@ -39,6 +40,11 @@ public:
      */
     void buildWith(const gl::Program& lister, const VoxelRegion& region);
     /**
+     * At most @p cells cells from now on, however large the region listed: a sparse grid's voxels all lie in
+     * its bricks, where a list as long as a region of a 512^3 grid would take 512 MiB outside the budget.
+     */
+    void capCapacity(std::size_t cells) { m_capacityCap = cells; }
+    /**
      * Empties the list and binds it (storage buffers @p binding and the next) for a shader of the caller's,
      * of any stage, to fill with appendCell() (common/AppendCell.glsl with APPEND_BINDING = @p binding, its
      * uGroupSize set to kGroupSize) with at most @p capacity cells: the voxelizer lists the voxels it reaches
@@ -66,6 +72,7 @@ private:
     const gl::Program* m_shiftProgram = nullptr;
     gl::Buffer m_dispatch; ///< DispatchIndirectCommand followed by the count
     gl::Buffer m_cells; ///< packed cell coordinates, 10 bits per axis
+    std::size_t m_capacityCap = SIZE_MAX;
 };
 
 } // namespace vct::render

@@ -1,5 +1,7 @@
 #include "core/VolumeShift.h"
 
+#include <stdexcept>
+
 #include "gl/Texture.h"
 
 #include <algorithm>
@@ -29,6 +31,8 @@ std::optional<glm::ivec3> VolumeShift::between(const VoxelGridFrame& from, const
 void VolumeShift::apply(const gl::Texture& volume, const gl::Texture* fill, const glm::ivec3& shift)
 {
     const int size = volume.width();
+    if (volume.height() != size || volume.depth() != size)
+        throw std::logic_error("VolumeShift moves the texels of a cubic grid, not of a brick pool");
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // One axis at a time: new[i] = old[i + d]. Slabs |d| thick, from the side the content moves towards, so
     // each copy reads slabs not yet overwritten (a copy within one image must not overlap itself).

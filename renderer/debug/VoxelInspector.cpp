@@ -1,5 +1,7 @@
 #include "debug/VoxelInspector.h"
 
+#include "common/Bindings.glsl"
+
 #include <algorithm>
 #include <bit>
 
@@ -46,6 +48,8 @@ const VoxelListing& VoxelInspector::list(
     radiance.bindUnit(0);
     channelTexture.bindUnit(1);
     volume.albedo.bindUnit(2);
+    if (volume.sparse) // level 0 of albedo, normal and emission through its bricks (common/VoxelBricks.glsl)
+        volume.brickTable.bindUnit(BRICK_TABLE_UNIT);
     m_entries.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     m_counter.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
     m_compact->use();

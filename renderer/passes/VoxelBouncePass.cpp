@@ -279,9 +279,12 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
     const bool voxelsChanged = cellsOutdated(v);
-    const bool sameBouncedTexture = v.bounced.serial() == m_bouncedSerial;
+    // A sparse grid whose bricks were all allocated again keeps its light's texels in other places.
+    const bool sameBouncedTexture
+        = v.bounced.serial() == m_bouncedSerial && (!v.sparse || v.brickLayout == m_brickLayout);
     if (voxelsChanged) {
         m_bouncedSerial = v.bounced.serial();
+        m_brickLayout = v.brickLayout;
         m_cellsSerial = v.bounceIrradiance.serial();
         m_cells.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize);
         m_builder.listCells(
@@ -299,7 +302,9 @@ void VoxelBouncePass::execute(FrameContext& frame)
     // with it first, and the slabs it did not cover start from the first-bounce light: a level that started
     // over at each step showed fewer bounces near the camera for the frames its solve took, and the solve ran
     // in most frames of a flight.
-    const std::optional<glm::ivec3> shift = voxelsChanged && sameBouncedTexture && m_grid != v.frame
+    // A brick pool is no grid to shift (a sparse grid that moved has new bricks anyway).
+    const std::optional<glm::ivec3> shift
+        = voxelsChanged && sameBouncedTexture && m_grid != v.frame && !v.sparse
         ? VolumeShift::between(m_grid, v.frame)
         : std::nullopt;
     const bool carryOver = progressive && m_iterations > 0

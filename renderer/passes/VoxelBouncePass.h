@@ -82,6 +82,7 @@ private:
     OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
     VoxelMipBuilder m_builder;
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
+    std::uint64_t m_brickLayout = 0; ///< VoxelVolume::brickLayout when the cells were found
     std::uint64_t m_bouncedSerial = 0; ///< the textures m_cells and the builder's lists were found for
     std::uint64_t m_cellsSerial = 0;
     std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for

@@ -83,13 +83,13 @@ PassDeclaration VoxelizePass::declare() const
     return { {}, { resource::kAlbedo, resource::kNormal, resource::kEmission, resource::kBrickTable } };
 }
 
-void VoxelizePass::refuseOverBudget(const FrameContext& frame)
+void VoxelizePass::refuseOverBudget(const FrameContext& frame, const glm::ivec3& pool)
 {
     // The settings could not count the pools before the bricks were known (RenderSettings::validate): the
     // budget holds them now, before anything is allocated.
     const VoxelVolume& v = frame.voxels;
     const double grid = std::pow(double(v.bricks.bricksPerSide()), 3.0);
-    const double slots = double(v.poolBricks.x) * double(v.poolBricks.y) * double(v.poolBricks.z);
+    const double slots = double(pool.x) * double(pool.y) * double(pool.z);
     VoxelSceneNeeds needs { frame.scene.scene().hasEmissiveMaterial(), frame.shape.areaLights > 0,
         frame.shape.lightSources, slots / grid };
     const std::uint64_t bytes = frame.settings.voxelMemoryBytes(needs);
@@ -111,47 +111,58 @@ void VoxelizePass::updateBricks(const FrameContext& frame)
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
     const Scene& scene = frame.scene.scene();
+    // How far from a triangle the voxelizer writes: the geometry shader's conservative enlargement reaches
+    // under a voxel beside it, and its depth spread up to a voxel more along the projection axis on a
+    // triangle sloped across both others (1.43 voxels found by a model of the voxelizer); a plain raster
+    // writes the voxel under each pixel centre.
+    const float reach = frame.settings.conservativeVoxelization ? 2.0f : 1.0f;
     const bool whole = v.bricks.resolution() != res || !(m_brickGrid == v.frame)
-        || m_brickStatic != frame.versions.staticGeometry;
-    if (!whole && m_brickDynamic == frame.versions.dynamicVoxels())
+        || m_brickStatic != frame.versions.staticGeometry || m_brickReach != reach;
+    if (!whole && m_brickDynamic == frame.versions.dynamicVoxels()
+        && m_brickBudget == frame.settings.voxelBudgetMiB)
         return;
-    // The voxelizer reaches a voxel up to one voxel from a triangle (conservative enlargement and the depth
-    // spread), and a sparse grid must have storage wherever it writes (core/BrickPool).
+    // Should the budget refuse the pool, nothing stays half done: the next frame allocates every brick again.
+    m_brickStatic = 0;
     const glm::mat4 toGrid = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / v.frame.voxelSize()))
         * glm::translate(glm::mat4(1.0f), -v.frame.origin);
-    if (whole)
+    if (whole) {
         v.bricks = BrickPool(res);
+        ++v.brickLayout;
+    }
     int added = 0;
     for (const Mesh& mesh : scene.meshes)
         if (mesh.visible && (whole || mesh.dynamic))
-            added += v.bricks.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
+            added += v.bricks.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform, reach);
     // A moving object's new bricks take free slots: room for twice the bricks the moving objects take where
     // they are when the pool is sized, so that a drag over their own size fits; the pool grows, and
     // everything is made again, only when the room runs out. Bricks an object left keep their slots until the
     // next whole rebuild. Room in proportion to the whole scene's bricks would cost the Sponza at 512^3 a
     // fifth of its pools for a statue.
-    const std::size_t needed = v.bricks.allocatedBricks() + 1;
-    const glm::ivec3 have = v.poolBricks;
-    if (whole || std::size_t(have.x) * std::size_t(have.y) * std::size_t(have.z) < needed) {
+    glm::ivec3 pool = v.poolBricks;
+    if (whole
+        || std::size_t(pool.x) * std::size_t(pool.y) * std::size_t(pool.z) < v.bricks.allocatedBricks() + 1) {
         BrickPool moving(res);
         for (const Mesh& mesh : scene.meshes)
             if (mesh.visible && mesh.dynamic)
-                moving.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
+                moving.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform, reach);
         const std::size_t bricks = v.bricks.allocatedBricks();
         const std::size_t room
             = bricks + (frame.scene.hasDynamicMeshes() ? 2 * moving.allocatedBricks() + 64 : 0);
-        const glm::ivec3 pool = BrickPool::poolBricksFor(std::min(room,
+        pool = BrickPool::poolBricksFor(std::min(room,
             std::size_t(v.bricks.bricksPerSide()) * v.bricks.bricksPerSide() * v.bricks.bricksPerSide()));
         if (pool == glm::ivec3(0))
             throw std::runtime_error("voxel_mode=sparse: " + std::to_string(v.bricks.allocatedBricks())
                 + " bricks do not fit one pool texture; use a lower voxel_res or voxel_mode=clipmap");
-        v.poolBricks = pool;
-        refuseOverBudget(frame);
     }
-    v.brickTableStale = v.brickTableStale || whole || added > 0;
+    // Every time, so that a lower budget refuses what is already allocated too.
+    refuseOverBudget(frame, pool);
+    v.brickTableStale = v.brickTableStale || whole || added > 0 || pool != v.poolBricks;
+    v.poolBricks = pool;
     m_brickGrid = v.frame;
     m_brickStatic = frame.versions.staticGeometry;
     m_brickDynamic = frame.versions.dynamicVoxels();
+    m_brickBudget = frame.settings.voxelBudgetMiB;
+    m_brickReach = reach;
 }
 
 std::vector<TextureSlot> VoxelizePass::textures(const FrameContext& frame)
@@ -245,10 +256,10 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     if (v.emission)
         v.emission.bindImage(2, 0, GL_READ_WRITE, GL_R32UI);
     // Clusters of triangles that cannot reach the region are not drawn; conservative enlargement and the
-    // depth spread reach one voxel beyond a triangle.
+    // depth spread reach up to two voxels beyond a triangle (updateBricks).
     const float voxel = v.frame.voxelSize();
-    const Aabb reach { v.frame.origin + glm::vec3(region.lo - 1) * voxel,
-        v.frame.origin + glm::vec3(region.hi + 1) * voxel };
+    const Aabb reach { v.frame.origin + glm::vec3(region.lo - 2) * voxel,
+        v.frame.origin + glm::vec3(region.hi + 2) * voxel };
     const Frustum regionBox = Frustum::ofBox(reach);
     const LatticePlacement lattice = latticeOf(frame);
     for (const bool emissive : { false, true }) {

@@ -35,8 +35,9 @@ private:
     /** voxel_mode=sparse: allocates the bricks the meshes reach (all after a static change, the dynamic
      * ones' new bricks after a move) and sizes the pool. */
     void updateBricks(const FrameContext& frame);
-    /** Throws, naming the figures, when the sparse grid's pools would take the voxel textures over budget. */
-    static void refuseOverBudget(const FrameContext& frame);
+    /** Throws, naming the figures, when a sparse grid's pools of @p pool bricks would take the voxel
+     * textures over budget. */
+    static void refuseOverBudget(const FrameContext& frame, const glm::ivec3& pool);
     /** How many voxels the grid stepped by since the last rewrite when that is all that changed (a clip
      * level following the camera), or nothing. */
     std::optional<glm::ivec3> gridStep(const FrameContext& frame) const;
@@ -68,6 +69,8 @@ private:
     VoxelGridFrame m_brickGrid; ///< the grid the bricks were allocated for
     std::uint64_t m_brickStatic = 0;
     std::uint64_t m_brickDynamic = 0;
+    int m_brickBudget = 0; ///< voxel_budget_mb the pool was last checked against
+    float m_brickReach = 0.0f;
 };
 
 } // namespace vct::render

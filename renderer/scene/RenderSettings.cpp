@@ -213,16 +213,23 @@ const char* debugViewName(DebugView view)
 
 std::string RenderSettings::set(const std::string& key, const std::string& value)
 {
-    const auto it = fields().find(key);
-    if (it == fields().end()) {
-        std::string known;
-        for (const auto& [name, field] : fields())
-            known += (known.empty() ? "" : ", ") + name;
-        return "unknown setting '" + key + "' (known: " + known + ")";
-    }
+    return setAll({ { key, value } });
+}
+
+std::string RenderSettings::setAll(const std::vector<std::pair<std::string, std::string>>& assignments)
+{
     RenderSettings candidate = *this;
-    if (!it->second.parse(candidate, value))
-        return "setting '" + key + "': cannot read '" + value + "' (" + it->second.meaning + ")";
+    for (const auto& [key, value] : assignments) {
+        const auto it = fields().find(key);
+        if (it == fields().end()) {
+            std::string known;
+            for (const auto& [name, field] : fields())
+                known += (known.empty() ? "" : ", ") + name;
+            return "unknown setting '" + key + "' (known: " + known + ")";
+        }
+        if (!it->second.parse(candidate, value))
+            return "setting '" + key + "': cannot read '" + value + "' (" + it->second.meaning + ")";
+    }
     if (std::string problem = candidate.validate(); !problem.empty())
         return problem;
     *this = candidate;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vct::render {
@@ -127,6 +128,12 @@ struct RenderSettings {
 
     /** Applies one `key=value`; returns an empty string or a message saying what is wrong. */
     std::string set(const std::string& key, const std::string& value);
+    /**
+     * Applies several `key=value` together and validates the result once, so that their order does not
+     * matter (`voxel_res=512` then `voxel_mode=sparse` is as valid as the other way round); nothing is
+     * applied if any is wrong.
+     */
+    std::string setAll(const std::vector<std::pair<std::string, std::string>>& assignments);
     /** Checks ranges together; returns an empty string or the first problem. */
     std::string validate() const;
     /**

@@ -34,11 +34,12 @@ void main()
     vec3 faceNormal = cross(vGrid[1] - vGrid[0], vGrid[2] - vGrid[0]);
     if (!(dot(faceNormal, faceNormal) > 0.0))
         return; // zero area or non-finite: nothing to voxelize
-    // A triangle that cannot reach the region (conservative enlargement and the depth spread reach one voxel
-    // beyond it) is not rasterised at all: a moving object's update redraws the static triangles near it.
+    // A triangle that cannot reach the region (conservative enlargement and the depth spread reach up to two
+    // voxels beyond it, on a triangle sloped across both other axes) is not rasterised at all: a moving
+    // object's update redraws the static triangles near it.
     vec3 lowest = min(vGrid[0], min(vGrid[1], vGrid[2])) * float(uResolution);
     vec3 highest = max(vGrid[0], max(vGrid[1], vGrid[2])) * float(uResolution);
-    if (any(lessThan(highest + 1.0, vec3(uRegionLo))) || any(greaterThanEqual(lowest - 1.0, vec3(uRegionHi))))
+    if (any(lessThan(highest + 2.0, vec3(uRegionLo))) || any(greaterThanEqual(lowest - 2.0, vec3(uRegionHi))))
         return;
     int axis = dominantAxis(faceNormal);
     vec3 p[3];
