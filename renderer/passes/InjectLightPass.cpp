@@ -1,8 +1,7 @@
 #include "passes/InjectLightPass.h"
 
-#include "core/Level0Clear.h"
-
 #include "core/FrameContext.h"
+#include "core/Level0Clear.h"
 #include "core/LightUniforms.h"
 #include "core/ResourceNames.h"
 #include "core/VolumeShift.h"

@@ -3,7 +3,7 @@
 // 9^3 texels of a pool texture: its voxels and, on the high side of each axis, a copy of the next brick's
 // first layer, so that a trilinear lookup anywhere inside a brick reads that brick alone. uBrickTable (r32ui,
 // a texel per brick) holds each brick's place in the pool (1 << 31 | x | y << 10 | z << 20, in bricks), 0
-// where it has none. Pool brick 0 is kept zero: loads from empty space read it, stores to it are dropped.
+// where it has none. Pool brick 0 is kept zero: loads from empty space read it; stores there are dropped.
 // The same defines make every level-0 access work in both, so a pass's code does not know which it runs on.
 #ifndef VOXEL_BRICKS_GLSL
 #define VOXEL_BRICKS_GLSL
