@@ -7,6 +7,7 @@
 #include "cli/StatsJson.h"
 #include "cli/TerminalProgress.h"
 #include "context/HeadlessContext.h"
+#include "core/BrickPool.h"
 #include "document/CameraFile.h"
 #include "document/LightsFile.h"
 #include "document/ProjectFile.h"
@@ -401,7 +402,9 @@ int RenderCommand::run(int argc, char** argv)
                     "  grid %d is sparse: its pools store %zu bricks (%.1f%% of the grid's) in %zu slots, "
                     "%.1f%% of a dense level 0\n",
                     b.grid, b.storedBricks, 100.0 * double(b.storedBricks) / double(b.totalBricks),
-                    b.poolSlots, 100.0 * double(b.poolSlots) * 729.0 / (double(b.totalBricks) * 512.0));
+                    b.poolSlots,
+                    100.0 * double(b.poolSlots) * double(render::BrickPool::kTexelsPerBrick)
+                        / (double(b.totalBricks) * double(render::BrickPool::kVoxelsPerBrick)));
         }
     }
     return nonFinite ? 4 : 0;

@@ -25,6 +25,10 @@ class BrickPool {
 public:
     static constexpr int kBrickVoxels = 8;
     static constexpr int kBrickTexels = kBrickVoxels + 1;
+    /// Voxels a brick stores, and the pool texels it takes with its border: what a sparse grid holds and
+    /// costs per brick.
+    static constexpr std::size_t kVoxelsPerBrick = std::size_t(kBrickVoxels) * kBrickVoxels * kBrickVoxels;
+    static constexpr std::size_t kTexelsPerBrick = std::size_t(kBrickTexels) * kBrickTexels * kBrickTexels;
     /// GL_MAX_3D_TEXTURE_SIZE's minimum, 2048 texels (what llvmpipe allows too), in whole bricks.
     static constexpr int kMaxPoolBricksPerAxis = 2048 / kBrickTexels;
     /// In a table() word, marks an allocated brick, so that slot 0 at pool position (0, 0, 0) differs from

@@ -264,7 +264,7 @@ void InjectLightPass::execute(FrameContext& frame)
             clearLevel0(v, v.radiance, region);
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
             if (v.sparse)
-                m_occupied.capCapacity(v.bricks.allocatedBricks() * 512);
+                m_occupied.capCapacity(v.bricks.allocatedBricks() * BrickPool::kVoxelsPerBrick);
             m_occupied.build(frame.shaders, v.albedo, region, 1);
             program.use();
             m_occupied.dispatchOverCells();

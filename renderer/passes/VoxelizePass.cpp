@@ -235,7 +235,7 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     // 512^3.
     std::size_t capacity = std::size_t(size.x) * std::size_t(size.y) * std::size_t(size.z);
     if (v.sparse)
-        capacity = std::min(capacity, v.bricks.allocatedBricks() * std::size_t(512));
+        capacity = std::min(capacity, v.bricks.allocatedBricks() * BrickPool::kVoxelsPerBrick);
     if (appendToTouched)
         touched.bindForAppending();
     else
