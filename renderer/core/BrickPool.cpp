@@ -1,67 +1,22 @@
 #include "core/BrickPool.h"
 
+#include "core/TriangleBoxOverlap.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace vct::render {
 
 namespace {
 
-using Corners = std::array<glm::dvec3, 3>;
-
 /// Grows every brick's box a little, so a triangle that touches one only within rounding still allocates
 /// it: an extra brick costs a little memory, a missing one loses the light of the voxels it should store.
 constexpr double kRoundingSlack = 1e-3;
-
-/**
- * Whether triangle @p v and the box of half-size @p half centred on the origin lie apart along @p axis. All
- * three corners are projected, where Akenine-Möller project two for the edge axes (the third falls on one of
- * them): with all three the test is sound for any axis, so an axis that rounding has tilted, or that a
- * degenerate triangle leaves zero, can at worst fail to separate, never separate what touches.
- */
-bool apartAlong(const glm::dvec3& axis, const Corners& v, const glm::dvec3& half)
-{
-    const double p0 = glm::dot(axis, v[0]);
-    const double p1 = glm::dot(axis, v[1]);
-    const double p2 = glm::dot(axis, v[2]);
-    const double radius = glm::dot(glm::abs(axis), half);
-    return std::min({ p0, p1, p2 }) > radius || std::max({ p0, p1, p2 }) < -radius;
-}
-
-/**
- * The separating axis test of a triangle and a box (Akenine-Möller, "Fast 3D Triangle-Box Overlap Testing",
- * 2001): the box's axes, the triangle's normal and the nine crosses of its edges with the box's axes. For a
- * triangle collapsed to a segment the normal and some crosses are zero and never separate; the box's axes
- * and the crosses of the segment with them are then the whole test for a segment, and the box's axes for a
- * point.
- */
-bool overlaps(const Corners& v, const glm::dvec3& half)
-{
-    static const glm::dvec3 boxAxes[3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
-    for (const glm::dvec3& axis : boxAxes)
-        if (apartAlong(axis, v, half))
-            return false;
-    const glm::dvec3 edges[3] = { v[1] - v[0], v[2] - v[1], v[0] - v[2] };
-    // The plane first: of the bricks in a large slanted triangle's bounds, it rejects most.
-    if (apartAlong(glm::cross(edges[0], edges[1]), v, half))
-        return false;
-    for (const glm::dvec3& edge : edges)
-        for (const glm::dvec3& axis : boxAxes)
-            if (apartAlong(glm::cross(edge, axis), v, half))
-                return false;
-    return true;
-}
-
-bool isFinite(const glm::vec3& p)
-{
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
 
 } // namespace
 
@@ -74,7 +29,7 @@ BrickPool::BrickPool(int resolution)
 
 int BrickPool::addTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, float reach)
 {
-    if (!isFinite(a) || !isFinite(b) || !isFinite(c) || !std::isfinite(reach)) {
+    if (!isFinitePoint(a) || !isFinitePoint(b) || !isFinitePoint(c) || !std::isfinite(reach)) {
         ++m_skippedTriangles;
         return 0;
     }
@@ -109,10 +64,7 @@ int BrickPool::addTriangle(const glm::vec3& a, const glm::vec3& b, const glm::ve
                 const glm::dvec3 boxHi
                     = glm::dvec3(glm::min(brick * kBrickVoxels + kBrickTexels, glm::ivec3(m_resolution)))
                     + margin;
-                const glm::dvec3 centre = 0.5 * (boxLo + boxHi);
-                const Corners corners
-                    = { glm::dvec3(a) - centre, glm::dvec3(b) - centre, glm::dvec3(c) - centre };
-                if (!overlaps(corners, 0.5 * (boxHi - boxLo)))
+                if (!triangleOverlapsBox(glm::dvec3(a), glm::dvec3(b), glm::dvec3(c), boxLo, boxHi))
                     continue;
                 slot = std::uint32_t(++m_allocatedBricks);
                 ++added;
