@@ -16,6 +16,7 @@
 #include "passes/AreaLightPass.h"
 #include "passes/CompositePass.h"
 #include "passes/ConeTracePass.h"
+#include "passes/EnclosurePass.h"
 #include "passes/GBufferPass.h"
 #include "passes/InjectLightPass.h"
 #include "passes/MipmapPass.h"
@@ -44,6 +45,7 @@ struct Renderer::State {
     std::uint64_t sceneUploads = 0; ///< setScene() calls (Renderer::sceneUploads)
     ChangeVersions versions;
     VoxelVolume voxels;
+    EnclosureMap enclosure;
     ShadowMaps shadows;
     ScreenTargets screen;
     ConeSet cones = ConeSet::diffuse(5);
@@ -147,6 +149,8 @@ std::unique_ptr<Pipeline> makePipeline(int gridLevels, std::vector<ClipLevelPass
 {
     std::vector<std::unique_ptr<RenderPass>> passes;
     passes.push_back(std::make_unique<ShadowMapPass>());
+    // Before every grid's passes: the clip levels' bounce gathers read it too.
+    passes.push_back(std::make_unique<EnclosurePass>());
     clipLevels.assign(std::size_t(std::max(gridLevels - 1, 0)), nullptr);
     std::vector<const VoxelVolume*> coarser;
     for (int level = gridLevels - 1; level >= 1; --level) {
@@ -472,7 +476,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         // A staged rebuild gives the bounce solve's frames one iteration each, so that none holds the event
         // loop for the solve's start and the screen passes together with several iterations.
         st.pipeline->rebuilding() && st.bounceIterationsPerFrame > 0 ? 1 : st.bounceIterationsPerFrame,
-        FrameShape {}, &st.pipeline->resources(), sceneGrid, {} };
+        FrameShape {}, &st.pipeline->resources(), sceneGrid, {}, &st.enclosure };
     for (const ClipLevelPass* level : st.clipLevels)
         frame.coarserLevels.push_back(&level->volume());
     frame.shape = FrameShape::of(frame);
@@ -523,6 +527,11 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     for (const ClipLevelPass* level : st.clipLevels)
         stats.lightConverged = stats.lightConverged && level->volume().bounceProgress.converged;
     stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
+    if (st.enclosure.inUse) {
+        const std::size_t side = std::size_t(st.enclosure.grid.resolution);
+        stats.enclosedCells = st.enclosure.enclosedCells;
+        stats.enclosureCells = side * side * side;
+    }
     return stats;
 }
 

@@ -159,6 +159,11 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
            "light or shade the cones leaving it; a lone one-sided quad is see-through from behind "
            "(drop_back_faces)"));
     m_dropBackFaces->setObjectName(QStringLiteral("dropBackFacesCheck"));
+    m_enclosedSpace = makeCheck(tr("Close enclosed space"),
+        tr("Where no light can leave (a closed room), diffuse cones count what walls one voxel thick let "
+           "through "
+           "as the walls' own light, so a closed room keeps its light (enclosed_space)"));
+    m_enclosedSpace->setObjectName(QStringLiteral("enclosedSpaceCheck"));
     m_bounces = new QComboBox;
     m_bounces->setObjectName(QStringLiteral("bouncesCombo"));
     m_bounces->addItem(tr("Converged (all)"), render::RenderSettings::kConvergedBounces);
@@ -291,6 +296,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     voxelForm->addRow(m_conservative);
     voxelForm->addRow(m_anisotropic);
     voxelForm->addRow(m_dropBackFaces);
+    voxelForm->addRow(m_enclosedSpace);
     voxelForm->addRow(tr("Bounces"), m_bounces);
     auto* budgetRow = new QHBoxLayout;
     budgetRow->addWidget(m_budget, 1);
@@ -398,6 +404,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     bindCheck(m_conservative, &render::RenderSettings::conservativeVoxelization);
     bindCheck(m_anisotropic, &render::RenderSettings::anisotropicMips);
     bindCheck(m_dropBackFaces, &render::RenderSettings::dropBackFaces);
+    bindCheck(m_enclosedSpace, &render::RenderSettings::enclosedSpace);
     bindCheck(m_irradianceCache, &render::RenderSettings::irradianceCache);
     bindCheck(m_direct, &render::RenderSettings::direct);
     bindCheck(m_indirectDiffuse, &render::RenderSettings::indirectDiffuse);
@@ -428,6 +435,7 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     s.diffuseConeCount = 7;
     s.diffuseApertureDeg = 22.0f;
     s.dropBackFaces = true;
+    s.enclosedSpace = true;
     s.stepFactor = 1.0f;
     s.bounceCellSize = 4;
     switch (preset) {
@@ -573,10 +581,11 @@ void RenderSettingsDock::load()
     const render::RenderSettings& s = m_document->state().settings;
 
     const QList<QWidget*> editors { m_resolution, m_gridLevels, m_conservative, m_anisotropic,
-        m_dropBackFaces, m_bounces, m_indirectResolution, m_specularResolution, m_areaShadowResolution,
-        m_irradianceCache, m_irradianceCell, m_coneCount, m_diffuseAperture, m_specularAperture, m_step,
-        m_maxDistance, m_coneOffset, m_direct, m_indirectDiffuse, m_indirectSpecular, m_ao, m_emission,
-        m_shadowMap, m_exposure, m_view, m_budget, m_fast, m_balanced, m_high };
+        m_dropBackFaces, m_enclosedSpace, m_bounces, m_indirectResolution, m_specularResolution,
+        m_areaShadowResolution, m_irradianceCache, m_irradianceCell, m_coneCount, m_diffuseAperture,
+        m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct, m_indirectDiffuse,
+        m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_budget, m_fast, m_balanced,
+        m_high };
     std::vector<std::unique_ptr<QSignalBlocker>> blockers;
     for (QWidget* w : editors)
         blockers.push_back(std::make_unique<QSignalBlocker>(w));
@@ -590,6 +599,7 @@ void RenderSettingsDock::load()
     m_anisotropic->setEnabled(s.voxelMode != render::VoxelMode::Sparse);
     m_dropBackFaces->setChecked(s.dropBackFaces);
     m_dropBackFaces->setEnabled(s.anisotropicMips); // only the directional chains know which way cones go
+    m_enclosedSpace->setChecked(s.enclosedSpace);
     selectIntItem(m_bounces, s.bounces, QString::number(s.bounces));
     m_irradianceCache->setChecked(s.irradianceCache);
     selectIntItem(m_irradianceCell, s.irradianceCellSize, QString::number(s.irradianceCellSize));

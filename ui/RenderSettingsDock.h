@@ -78,6 +78,7 @@ private:
     QCheckBox* m_conservative = nullptr;
     QCheckBox* m_anisotropic = nullptr;
     QCheckBox* m_dropBackFaces = nullptr;
+    QCheckBox* m_enclosedSpace = nullptr;
     QComboBox* m_bounces = nullptr;
     QComboBox* m_indirectResolution = nullptr;
     QComboBox* m_specularResolution = nullptr;

@@ -2,6 +2,8 @@
 
 #include "core/FrameStats.h"
 
+#include <algorithm>
+
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -152,6 +154,13 @@ void StatsDock::showStats(const render::FrameStats& stats)
                 .arg(stats.lightConverged ? QString() : tr(", converging…")));
     else
         m_bounces->setText(tr("one bounce"));
+    // Where the gathers count what walls let through as the walls' light (enclosed_space).
+    if (stats.enclosedCells > 0)
+        m_bounces->setText(m_bounces->text()
+            + tr(" · enclosed: %1% of the grid")
+                  .arg(100.0 * double(stats.enclosedCells)
+                          / double(std::max<std::size_t>(stats.enclosureCells, 1)),
+                      0, 'f', 1));
 }
 
 } // namespace vct::ui

@@ -25,6 +25,8 @@ QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const ren
     root["voxel_bytes_per_cell"] = last.voxelBytesPerCell();
     root["voxel_bytes_per_occupied_voxel"] = last.voxelBytesPerOccupiedVoxel();
     root["bounce_iterations"] = last.bounceIterations;
+    root["enclosed_cells"] = qint64(last.enclosedCells);
+    root["enclosure_cells"] = qint64(last.enclosureCells);
     root["bounce_residual"] = last.bounceResidual;
     root["light_converged"] = last.lightConverged;
     root["bounce_extrapolated"] = last.bounceExtrapolated;

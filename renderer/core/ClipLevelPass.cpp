@@ -22,13 +22,15 @@ ClipLevelPass::ClipLevelPass(int level, std::vector<const VoxelVolume*> coarser)
     passes.push_back(std::make_unique<MipmapPass>());
     passes.push_back(std::make_unique<VoxelBouncePass>());
     m_pipeline = std::make_unique<Pipeline>(std::move(passes),
-        std::vector<std::string> { resource::kPointShadows, resource::kDirectionalShadows });
+        std::vector<std::string> {
+            resource::kPointShadows, resource::kDirectionalShadows, resource::kEnclosure });
 }
 
 PassDeclaration ClipLevelPass::declare() const
 {
-    // Injection reads the shadow maps the frame's pipeline made before.
-    return { { resource::kPointShadows, resource::kDirectionalShadows }, {} };
+    // Injection reads the shadow maps the frame's pipeline made before, the bounce gathers its enclosed
+    // space.
+    return { { resource::kPointShadows, resource::kDirectionalShadows, resource::kEnclosure }, {} };
 }
 
 PassDecision ClipLevelPass::plan(const FrameContext& frame) const
@@ -45,6 +47,7 @@ void ClipLevelPass::execute(FrameContext& frame)
         frame.screen, frame.diffuseCones, frame.staticMaterialEdits, frame.camera, frame.view,
         frame.projection, frame.pixelToRay, nullptr, frame.bounceIterationsPerFrame, FrameShape {},
         &m_pipeline->resources(), frame.sceneGrid, m_coarser };
+    level.enclosure = frame.enclosure;
     level.shape = FrameShape::of(level);
     m_lastStats = m_pipeline->execute(level);
 }

@@ -20,6 +20,7 @@ struct ConeTraceKey {
     bool dropBackFaces = false;
     float maxDistance = 0.0f;
     float coneOffset = 0.0f;
+    std::uint64_t enclosure = 0; ///< the enclosed-space map's version, 0 when gathers do not use one
     /// A clipmap's coarser levels, which the cones go on into: their radiance and bounced versions, so that
     /// what a finer level gathered is redone when their light changes.
     std::vector<std::uint64_t> coarserLight;

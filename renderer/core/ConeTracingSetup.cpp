@@ -40,6 +40,14 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uCones", cones);
     program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
 
+    const bool enclosure = frame.enclosure && frame.enclosure->inUse && frame.enclosure->texture;
+    program.set("uEnclosureUsed", int(enclosure));
+    if (enclosure) {
+        const VoxelGridFrame& map = frame.enclosure->grid;
+        program.set("uEnclosureBox", glm::vec4(map.origin, map.extent));
+        program.set("uEnclosureLift", 1.5f * map.voxelSize());
+        frame.enclosure->texture.bindUnit(ENCLOSURE_UNIT);
+    }
     v.coneRadiance().bindUnit(5);
     if (anisotropic) {
         v.coneDirectional().bindUnit(6);
@@ -105,7 +113,8 @@ ConeTraceKey ConeTraceKey::of(const FrameContext& frame)
 {
     const RenderSettings& s = frame.settings;
     ConeTraceKey key { s.anisotropicMips, s.diffuseConeCount, frame.voxels.frame.resolution,
-        s.diffuseApertureDeg, s.stepFactor, s.dropBackFaces, s.maxDistance, s.coneOffsetVoxels, {} };
+        s.diffuseApertureDeg, s.stepFactor, s.dropBackFaces, s.maxDistance, s.coneOffsetVoxels,
+        frame.enclosure && frame.enclosure->inUse ? frame.enclosure->version : 0, {} };
     for (const VoxelVolume* level : frame.coarserLevels) {
         key.coarserLight.push_back(level->radianceVersion);
         key.coarserLight.push_back(level->bouncedVersion);

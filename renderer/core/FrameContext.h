@@ -71,6 +71,9 @@ struct FrameContext {
     /// A clipmap's levels coarser than `voxels`, finest first (core/ClipLevelPass): where cones that leave
     /// `voxels` go on tracing. Empty for a dense grid.
     std::vector<const VoxelVolume*> coarserLevels;
+    /// The space no light can leave (EnclosurePass fills it, the diffuse gathers read it); null in contexts
+    /// without one, where gathers scale nothing.
+    EnclosureMap* enclosure = nullptr;
 };
 
 } // namespace vct::render

@@ -49,6 +49,10 @@ struct FrameStats {
     double bounceResidual = 0.0;
     bool lightConverged = true;
     bool bounceExtrapolated = false; ///< the geometric tail was added (bounceResidual is then its error)
+    /// Cells of the enclosed-space map (passes/EnclosurePass) no light can leave, and the map's cells: the
+    /// diffuse gathers starting in them count what walls let through as the walls' light. 0 of 0 when off.
+    std::size_t enclosedCells = 0;
+    std::size_t enclosureCells = 0;
     /// Staged frames (Renderer::setStagedRebuilds): passes were deferred to the next frame, so the final
     /// image is still the last complete one; render again to go on.
     bool deferred = false;

@@ -19,6 +19,7 @@ inline constexpr const char* kBounceCells = "bounce cells";
 inline constexpr const char* kBounceCellsBack = "bounce cells, back faces";
 inline constexpr const char* kBounceCellNormals = "bounce cell normals";
 inline constexpr const char* kBrickTable = "brick table"; // a sparse grid's (common/VoxelBricks.glsl)
+inline constexpr const char* kEnclosure = "enclosed space"; // around the scene (core/EnclosedSpace)
 inline constexpr const char* kIrradiance = "irradiance cache";
 inline constexpr const char* kIrradianceBack = "irradiance cache, back faces";
 inline constexpr const char* kIrradianceNormals = "irradiance cell normals";

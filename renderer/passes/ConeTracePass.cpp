@@ -21,7 +21,7 @@ using namespace resource;
 PassDeclaration ConeTracePass::declare() const
 {
     return { { kSurface, kRadiance, kRadianceDirectional, kBounced, kBouncedDirectional, kIrradiance,
-                 kIrradianceBack, kIrradianceNormals },
+                 kIrradianceBack, kIrradianceNormals, kEnclosure },
         { kIndirectDiffuse, kIndirectGuide, kIndirectStencil, kSpecular, kSpecularGuide, kSpecularStencil } };
 }
 

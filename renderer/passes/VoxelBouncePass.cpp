@@ -61,7 +61,7 @@ PassDecision VoxelBouncePass::plan(const FrameContext& frame) const
 PassDeclaration VoxelBouncePass::declare() const
 {
     using namespace resource;
-    return { { kAlbedo, kNormal, kEmission, kRadiance },
+    return { { kAlbedo, kNormal, kEmission, kRadiance, kEnclosure },
         { kBounced, kBouncedDirectional, kBounceCells, kBounceCellsBack, kBounceCellNormals, kBounceCellMarks,
             kBounceSums } };
 }
@@ -224,8 +224,11 @@ std::vector<VoxelBouncePass::Change> VoxelBouncePass::readChanges(int first, int
     for (int k = first; k < first + count; ++k) {
         const auto at
             = [&](int which) { return double(sums[std::size_t(BOUNCE_SUMS_PER_ITERATION * k + which)]); };
-        changes.push_back({ at(BOUNCE_SUM_VOXEL_CHANGE), at(BOUNCE_SUM_VOXEL_TOTAL), at(BOUNCE_SUM_TAIL),
-            at(BOUNCE_SUM_TAIL_ERROR) });
+        // The tail is per channel; any of them added means the solve extrapolated.
+        const double tail
+            = std::max({ at(BOUNCE_SUM_TAIL), at(BOUNCE_SUM_TAIL + 1), at(BOUNCE_SUM_TAIL + 2) });
+        changes.push_back(
+            { at(BOUNCE_SUM_VOXEL_CHANGE), at(BOUNCE_SUM_VOXEL_TOTAL), tail, at(BOUNCE_SUM_TAIL_ERROR) });
     }
     return changes;
 }

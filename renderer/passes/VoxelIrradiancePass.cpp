@@ -41,7 +41,7 @@ PassDecision VoxelIrradiancePass::plan(const FrameContext& frame) const
 PassDeclaration VoxelIrradiancePass::declare() const
 {
     using namespace resource;
-    return { { kSurface, kRadiance, kRadianceDirectional, kBounced, kBouncedDirectional },
+    return { { kSurface, kRadiance, kRadianceDirectional, kBounced, kBouncedDirectional, kEnclosure },
         { kIrradiance, kIrradianceBack, kIrradianceNormals, kIrradianceRequested } };
 }
 

@@ -90,6 +90,14 @@ struct RenderSettings {
     /// lone quad) is see-through to cones reaching it from behind (docs/ACCURACY.md, "Back faces and the
     /// grid's faces").
     bool dropBackFaces = true;
+    /// In space no light can leave (a closed room: core/EnclosedSpace), each diffuse cone's light is scaled
+    /// by 1 / its opacity: what the voxels let through there is a wall one voxel thick seen at a coarse
+    /// level, not light leaving the scene, and a white furnace read 23% short of E / (1 - rho) without it
+    /// (docs/DESIGN.md, "Enclosed space").
+    bool enclosedSpace = true;
+    /// The enclosed-space map's cells a side at most (a byte each: 2 MiB). On finer grids a cell spans
+    /// several voxels, so an opening narrower than two cells (1/64 of the grid) may count as closed.
+    static constexpr int kMaxEnclosureResolution = 128;
     float maxDistance = -1.0f; ///< Cone length in metres; negative = the grid's diagonal.
     /// Cone origins start this many voxels along the normal; on grids finer than 128^3 as far as on that grid
     /// (ConeTracingSetup::coneOffsetMetres).

@@ -75,6 +75,10 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
     for (int level = 1; level < settings.gridLevels(); ++level)
         for (std::size_t i = 0; i < oneLevel; ++i)
             textures.push_back({ clipLevelName(level, textures[i].name), textures[i].bytes });
+    // Where the grid around the scene is closed in (passes/EnclosurePass): r8.
+    if (settings.enclosedSpace)
+        textures.push_back({ "enclosed space",
+            chain(std::min<std::uint64_t>(n, RenderSettings::kMaxEnclosureResolution), 1, false) });
     // The irradiance cache's cells, and which of them were gathered (r32ui): over the finest grid only (in a
     // clipmap, pixels beyond its finest level trace their own cones).
     if (settings.irradianceCache) {

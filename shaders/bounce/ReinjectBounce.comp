@@ -71,8 +71,10 @@ void main()
         total = dot(result.rgb, vec3(1.0));
         // Where bounce/DecideTail.comp found the tail q / (1 - q) trustworthy, store L + tail * change: the limit
         // of the iteration when its change shrinks by q per step. The sums above still measure the plain change.
-        float tail = imageLoad(uSums, ivec2(BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_TAIL, 0)).r;
-        if (tail > 0.0)
+        int at = BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_TAIL;
+        vec3 tail = vec3(imageLoad(uSums, ivec2(at, 0)).r, imageLoad(uSums, ivec2(at + 1, 0)).r,
+            imageLoad(uSums, ivec2(at + 2, 0)).r);
+        if (any(greaterThan(tail, vec3(0.0))))
             result.rgb = max(result.rgb + tail * (result.rgb - previous), vec3(0.0));
         STORE_VOXEL(uBounced, voxel, result);
     }

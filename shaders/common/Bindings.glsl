@@ -20,6 +20,7 @@
 #define CLIP_TOWARDS_UNIT 26
 #define MAX_CLIP_LEVELS 6
 #define BRICK_TABLE_UNIT 31 // a sparse grid's brick table (common/VoxelBricks.glsl), bound once a frame
+#define ENCLOSURE_UNIT 32 // where the grid around the scene is closed in (common/ConeTracing.glsl)
 #define CLIP_BAND_VOXELS 4 // a cone starting this near a clip level's moving faces blends with the next level's
 
 #define MAX_POINT_LIGHTS 8 // lights beyond these are ignored, and reported by the renderer

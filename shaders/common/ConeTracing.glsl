@@ -343,6 +343,33 @@ uniform int uConeCount;
 uniform vec4 uCones[MAX_CONES]; // tangent-space axis, w = weight
 uniform float uDiffuseTanHalf;
 
+// Where the grid around the scene is closed in (core/EnclosedSpace): 1 in empty cells no light can leave.
+#include "common/Bindings.glsl"
+layout(binding = ENCLOSURE_UNIT) uniform sampler3D uEnclosure;
+uniform bool uEnclosureUsed;
+uniform vec4 uEnclosureBox; // xyz: the map's corner, w: its side (metres)
+uniform float uEnclosureLift; // metres along the normal to the cell that decides: 1.5 of the map's cells
+
+// Whether a gather from surface point p (normal n) starts in space no light can leave. There every cone ends
+// on a surface, so what the voxels let through (a wall one voxel thick, seen at a coarse level, is part
+// transparent) is light of the walls the cone reached: its opacity-weighted mean stands for it.
+bool startsEnclosed(vec3 p, vec3 n)
+{
+    if (!uEnclosureUsed)
+        return false;
+    vec3 uvw = (p + n * uEnclosureLift - uEnclosureBox.xyz) / uEnclosureBox.w;
+    if (any(lessThan(uvw, vec3(0.0))) || any(greaterThanEqual(uvw, vec3(1.0))))
+        return false;
+    return textureLod(uEnclosure, uvw, 0.0).r > 0.25;
+}
+
+// What a cone that starts in enclosed space gathers: its light over its opacity, the scale capped at 4 so a
+// cone that met almost nothing (through a crack the map cannot see) is not blown up.
+vec3 closedIn(vec4 traced)
+{
+    return traced.rgb / max(traced.a, 0.25);
+}
+
 // The diffuse cones around n from surface point p: rgb = sum_i w_i L_i (irradiance / pi), a = ambient
 // visibility.
 vec4 gatherDiffuse(vec3 p, vec3 n)
@@ -351,11 +378,13 @@ vec4 gatherDiffuse(vec3 p, vec3 n)
     tangentBasis(n, t, b);
     vec3 sum = vec3(0.0);
     float occlusion = 0.0;
+    bool enclosed = startsEnclosed(p, n);
     for (int i = 0; i < uConeCount; ++i) {
         vec3 axis = uCones[i].xyz;
         vec3 dir = normalize(t * axis.x + b * axis.y + n * axis.z);
         float coneOcclusion;
-        sum += uCones[i].w * traceSurfaceCone(p, n, dir, uDiffuseTanHalf, max(axis.z, 0.05), coneOcclusion).rgb;
+        vec4 traced = traceSurfaceCone(p, n, dir, uDiffuseTanHalf, max(axis.z, 0.05), coneOcclusion);
+        sum += uCones[i].w * (enclosed ? closedIn(traced) : traced.rgb);
         occlusion += uCones[i].w * coneOcclusion;
     }
     return vec4(sum, clamp(1.0 - occlusion, 0.0, 1.0));

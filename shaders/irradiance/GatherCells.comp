@@ -65,14 +65,14 @@ float cellOccupancy(ivec3 cell, ivec3 offset)
     return occupied / float(uCellSize * uCellSize * uCellSize);
 }
 
-float gChange = 0.0; // this invocation's part of the change sums (CHANGE_SUMS)
+vec3 gChange = vec3(0.0); // this invocation's part of the change sums (CHANGE_SUMS), per channel
 float gTotal = 0.0;
 
 void storeGathered(ivec3 cell, bool front, vec4 gathered)
 {
 #ifdef CHANGE_SUMS
     vec3 before = uFirstGather ? vec3(0.0) : max((front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell)).rgb, vec3(0.0));
-    gChange += dot(abs(gathered.rgb - before), vec3(1.0));
+    gChange += abs(gathered.rgb - before);
     gTotal += dot(gathered.rgb, vec3(1.0));
 #endif
     if (front)
@@ -164,6 +164,9 @@ void main()
     if (occupiedCell(cell))
         gatherCell(cell);
 #ifdef CHANGE_SUMS
-    addGroupSums(gChange, gTotal, BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_CELL_CHANGE);
+    int sums = BOUNCE_SUMS_PER_ITERATION * uIteration + BOUNCE_SUM_CELL_CHANGE;
+    addGroupSums(gChange.r, gChange.g, sums);
+    barrier(); // the first call's last reads of the shared sums before the second writes them
+    addGroupSums(gChange.b, gTotal, sums + 2);
 #endif
 }

@@ -20,8 +20,9 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 /// The dark room may show at most this share of the lit room's radiance (docs/STABILITY.md).
 constexpr double kThinWallLeakBound = 0.03;
 constexpr double kThinWallLeakBoundCached = 0.06;
-/// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md).
-constexpr double kThinWallLeakBoundConverged = 0.18;
+/// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md): the more
+/// its gathers capture, the more (both rooms are closed, so they capture all: RenderSettings::enclosedSpace).
+constexpr double kThinWallLeakBoundConverged = 0.24;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by
  * `offset`. */
@@ -123,6 +124,7 @@ private slots:
     void smallChangesGiveSmallDifferences();
     void finerGridsConverge();
     void thinWallLeak();
+    void enclosedSpaceChangesOnlyClosedRooms();
 
 private:
     render::RadianceImage render(
@@ -188,8 +190,11 @@ void HardCasesTest::scaleAndOffsetInvariance_data()
     QTest::addColumn<glm::vec3>("offset");
     QTest::addColumn<bool>("anisotropic");
     QTest::addColumn<double>("tolerance"); // relative MSE against the unit room
-    QTest::newRow("tiny 1e-4") << 1e-4f << glm::vec3(0.0f) << false << 1e-3;
-    QTest::newRow("huge 1e4") << 1e4f << glm::vec3(0.0f) << false << 1e-3;
+    // The room is closed: its gathers count what the box-filtered mips let through (most of it: a one-voxel
+    // wall has opacity 2^-k at level k) as the walls' light, dividing by opacities near 0.25, which scales a
+    // rounding difference's effect by as much (measured 4.3e-3 for both, 1e-3 or less before).
+    QTest::newRow("tiny 1e-4") << 1e-4f << glm::vec3(0.0f) << false << 1e-2;
+    QTest::newRow("huge 1e4") << 1e4f << glm::vec3(0.0f) << false << 1e-2;
     // float32 resolves positions near 1e5 to 0.008: coarser than anything in a 2-unit room, so allow more
     // (measured 1.9e-3). The bound was 5e-2 until shadow maps built from world coordinates near 1e5 reached
     // 4.6e-2 unnoticed; 1e-2 would have caught that.
@@ -288,7 +293,11 @@ void HardCasesTest::extremeLightsAndMaterials()
         scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(0.0f);
         break;
     case 6:
+        // A closed room that absorbs nothing has no finite limit: its gathers capture all around them
+        // (RenderSettings::enclosedSpace), so the light grows by the first bounce each iteration until the
+        // solve's iteration limit stops it. Finite and positive is all there is to check.
         scene.materials[0].albedo = scene.materials[1].albedo = glm::vec3(1.0f);
+        bound = 1e3f;
         break;
     case 7: // 1000 x 1 x 1000: a floor under a very low ceiling
         for (render::Mesh& mesh : scene.meshes) {
@@ -530,19 +539,20 @@ void HardCasesTest::whiteFurnace()
     const float rho = 0.5f, emission = 1.0f;
     render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
-    // 4% with anisotropic mips (measured 2.7% low with 60- and 30-degree cones): a cone whose next step would
-    // leave the grid samples once more at its face (common/ConeTracing.glsl), where it stepped over the wall
-    // before (7.2% and 5.5% low then); a cone leaving at an angle still blends the wall it crosses with
-    // chains that see it edge-on (docs/STABILITY.md). The irradiance cache gathers the same cones per cell
-    // instead of per pixel, so the same bound holds.
+    // 1% with anisotropic mips (measured within 0.1% with 60- and 30-degree cones, cached or not), 3% with
+    // box-filtered ones (1.7% low): the room is closed, so the gathers count what the walls let through as
+    // the walls' light (RenderSettings::enclosedSpace). Without that, anisotropic mips read 2.7% low (a cone
+    // leaving at an angle blends the wall it crosses with chains that see it edge-on) and box-filtered ones
+    // 74% low (a one-voxel wall has opacity 2^-k at level k); docs/STABILITY.md. The irradiance cache gathers
+    // the same cones per cell instead of per pixel, so the same bound holds.
     struct Case {
         bool anisotropic;
         float apertureDeg;
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : { Case { false, 60.0f, false, 0.0f }, Case { true, 60.0f, false, 0.04f },
-             Case { true, 30.0f, false, 0.04f }, Case { true, 30.0f, true, 0.04f } }) {
+    for (const Case c : { Case { false, 60.0f, false, 0.03f }, Case { true, 60.0f, false, 0.01f },
+             Case { true, 30.0f, false, 0.01f }, Case { true, 30.0f, true, 0.01f } }) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
         settings.bounces = 1; // pixels see E + rho E: the capture of one gather, alone
@@ -574,10 +584,10 @@ void HardCasesTest::whiteFurnace()
 }
 
 // With bounces = 2 each voxel gathers a bounce first, so pixels see E + rho E + rho^2 E. Each gather captures
-// a share c of the light around it (c = 0.92 with anisotropic mips and 60-degree cones, from the
-// single-bounce case), so the renderer should give E + rho c (E + rho c E): within 1% of that (the gather per
-// cell and per pixel is the same code), and within 6% of the physical value (measured 4.5%: c compounds;
-// 9.8% before cones took their last sample at the grid's face).
+// a share c of the light around it (c = 1.00 with anisotropic mips and 60-degree cones in this closed room,
+// from the single-bounce case; 0.92 before gathers in enclosed space counted what walls let through), so the
+// renderer should give E + rho c (E + rho c E): within 1% of that (the gather per cell and per pixel is the
+// same code), and within 1% of the physical value (measured 0.06% over; 4.5% short before).
 void HardCasesTest::whiteFurnaceSecondBounce()
 {
     const float rho = 0.5f, emission = 1.0f;
@@ -600,7 +610,7 @@ void HardCasesTest::whiteFurnaceSecondBounce()
     qInfo("white furnace, two bounces: mean %.4f, gather model %.4f (capture %.3f), physical %.4f",
         double(mean), double(model), double(capture), double(physical));
     QVERIFY2(std::abs(mean - model) <= 0.01f * model, qPrintable(QString::number(double(mean))));
-    QVERIFY2(std::abs(mean - physical) <= 0.06f * physical, qPrintable(QString::number(double(mean))));
+    QVERIFY2(std::abs(mean - physical) <= 0.01f * physical, qPrintable(QString::number(double(mean))));
 }
 
 void HardCasesTest::whiteFurnaceConverged_data()
@@ -613,8 +623,10 @@ void HardCasesTest::whiteFurnaceConverged_data()
 // The defaults: the emitting walls are one area light, so the pixels' direct light is exact, E + rho E
 // (checked alone with indirect light off, where nothing else adds to it), and the voxels converge to rho E /
 // (1 - rho c), c being the share of its surroundings one gather captures (measured as in whiteFurnace).
-// Pixels then read E + rho E / (1 - rho c), which falls short of the physical E / (1 - rho) by what the cones
-// leak through one-voxel walls (docs/STABILITY.md has the figures).
+// Pixels then read E + rho E / (1 - rho c). The room is closed, so the gathers count what the one-voxel walls
+// let through as the walls' light (RenderSettings::enclosedSpace): c is 1 within a few tenths of a percent
+// and the image reads the physical E / (1 - rho) within the 2% (docs/STABILITY.md has the figures;
+// without it c was 0.90 and the image 4.5% / 23% short).
 void HardCasesTest::whiteFurnaceConverged()
 {
     QFETCH(float, rho);
@@ -645,16 +657,21 @@ void HardCasesTest::whiteFurnaceConverged()
     expectSane(image, 2.0f * physical);
     const float mean = io::ImageMetrics::meanRadiance(image).r;
     const float model = emission + rho * emission / (1.0f - rho * capture);
+    int farFromPhysical = 0;
+    for (const glm::vec3& p : image.pixels)
+        farFromPhysical += std::abs(p.r - physical) > 0.02f * physical ? 1 : 0;
     qInfo("white furnace, rho %.1f: area light alone %.4f (exact %.4f, %d pixels off by 2%%); converged "
           "bounces %.4f, "
-          "gather model %.4f (capture %.3f), physical %.4f (%.1f%% short)",
+          "gather model %.4f (capture %.3f), physical %.4f (%.1f%% short; %d of %d pixels off by 2%%)",
         double(rho), double(directMean), double(emission * (1.0f + rho)), outliers, double(mean),
-        double(model), double(capture), double(physical), 100.0 * double(1.0f - mean / physical));
+        double(model), double(capture), double(physical), 100.0 * double(1.0f - mean / physical),
+        farFromPhysical, int(image.pixels.size()));
     QVERIFY2(std::abs(directMean - emission * (1.0f + rho)) <= 0.01f * emission * (1.0f + rho),
         qPrintable(QString::number(double(directMean))));
     QCOMPARE(outliers, 0);
     QVERIFY2(std::abs(mean - model) <= 0.03f * model, qPrintable(QString::number(double(mean))));
-    QVERIFY2(mean > emission * (1.0f + rho) && mean < physical, qPrintable(QString::number(double(mean))));
+    QVERIFY2(std::abs(mean - physical) <= 0.02f * physical, qPrintable(QString::number(double(mean))));
+    QVERIFY2(capture > 0.99f, qPrintable(QString::number(double(capture))));
 }
 
 void HardCasesTest::sphereInEmittingRoom_data()
@@ -723,11 +740,12 @@ void HardCasesTest::convergedSolveEndsAtItsLimit_data()
 
 // `bounces=converged` ends by adding the iteration's geometric tail (VoxelBouncePass,
 // bounce/DecideTail.comp): its image must be the one forty plain iterations reach, within the 1% tolerance,
-// in fewer iterations than stopping where the change is small took. Measured: the room in 4 iterations, 0.8%
-// short of its limit (relative MSE 3.6e-5), the furnace in 3, 0.2% over (3.1e-6). Stopping where the change
-// is under 1%, without the tail, took 7 and 8 iterations before cones took their last sample at the grid's
-// face; with it a gather captures more, the light converges more slowly, and the tail taken at an estimated
-// error under the whole tolerance left the room 1.04% short (bounce/DecideTail.comp now asks for half).
+// in fewer iterations than stopping where the change is small took. Both rooms are closed, so their gathers
+// capture all around them (RenderSettings::enclosedSpace) and the light shrinks by rho per iteration: the
+// furnace's ratio is 0.8, where plain iterations need about 20 to change by less than 1%. Measured: the room
+// in 5 iterations, its furthest channel 0.14% over its limit (relative MSE 9e-7), the furnace in 9, 0.15%
+// over (2.4e-6). With one ratio for all three colours the room's red (its red quad keeps more red)
+// ended 1.25% short; the tail is per channel now. The bounds: 6 and 10 iterations.
 void HardCasesTest::convergedSolveEndsAtItsLimit()
 {
     QFETCH(bool, furnaceScene);
@@ -741,15 +759,21 @@ void HardCasesTest::convergedSolveEndsAtItsLimit()
     const render::FrameStats stats = m_gl.renderer->renderFrame(scene.camera, 48, 48);
     expectSane(converged, furnaceScene ? 10.0f : 1e4f);
     const double difference = io::ImageMetrics::relativeMse(converged, limit);
-    const double meanRatio = double(io::ImageMetrics::meanRadiance(converged).r)
-        / double(io::ImageMetrics::meanRadiance(limit).r);
+    // The channel furthest from its limit: each colour has a tail of its own.
+    double meanRatio = 1.0;
+    for (int c = 0; c < 3; ++c) {
+        const double ratio = double(io::ImageMetrics::meanRadiance(converged)[c])
+            / double(io::ImageMetrics::meanRadiance(limit)[c]);
+        meanRatio = std::abs(ratio - 1.0) > std::abs(meanRatio - 1.0) ? ratio : meanRatio;
+    }
     qInfo("converged in %d iterations (%s, estimated error %.2g): relative MSE %.2e and mean ratio %.4f "
           "against 39 iterations",
         stats.bounceIterations, stats.bounceExtrapolated ? "extrapolated" : "not extrapolated",
         stats.bounceResidual, difference, meanRatio);
     QVERIFY(stats.lightConverged);
     QVERIFY(stats.bounceExtrapolated);
-    QVERIFY2(stats.bounceIterations <= 4, qPrintable(QString::number(stats.bounceIterations)));
+    QVERIFY2(stats.bounceIterations <= (furnaceScene ? 10 : 6),
+        qPrintable(QString::number(stats.bounceIterations)));
     QVERIFY2(std::abs(meanRatio - 1.0) < 0.01, qPrintable(QString::number(meanRatio)));
     QVERIFY2(difference < 1e-4, qPrintable(QString::number(difference)));
 }
@@ -844,6 +868,40 @@ void HardCasesTest::thinWallLeak()
                 : kThinWallLeakBoundConverged;
             QVERIFY2(leak < bound, qPrintable(QString::number(leak)));
         }
+}
+
+// A gather that starts where no light can leave counts what the voxels let through as the walls' light
+// (RenderSettings::enclosedSpace). A room open on one side has no such space: its image must be the same
+// bit for bit with and without, so open scenes (the reference boxes, the atrium, the Sponza) keep their
+// figures. Closed, the room keeps what its one-voxel walls leaked, and reads brighter.
+void HardCasesTest::enclosedSpaceChangesOnlyClosedRooms()
+{
+    render::Scene open = room();
+    render::Mesh& walls = open.meshes[0];
+    walls.indices.erase(
+        walls.indices.begin() + 18, walls.indices.begin() + 24); // the front wall, behind the camera
+    for (const bool closed : { false, true }) {
+        const render::Scene& scene = closed ? room() : open;
+        render::RenderSettings settings;
+        settings.voxelResolution = 32;
+        settings.enclosedSpace = false;
+        const render::RadianceImage without = render(scene, settings, 48);
+        settings.enclosedSpace = true;
+        const render::RadianceImage with = render(scene, settings, 48);
+        const render::FrameStats stats = m_gl.renderer->renderFrame(scene.camera, 48, 48);
+        expectSane(with, 1e4f);
+        const double ratio = io::ImageMetrics::meanLuminance(with) / io::ImageMetrics::meanLuminance(without);
+        qInfo("%s room: %zu of %zu cells enclosed, image mean %.4f of the one without",
+            closed ? "closed" : "open", stats.enclosedCells, stats.enclosureCells, ratio);
+        QCOMPARE(stats.enclosureCells, std::size_t(32 * 32 * 32));
+        if (closed) {
+            QVERIFY(stats.enclosedCells > std::size_t(32 * 32 * 32 / 2));
+            QVERIFY2(ratio > 1.02, qPrintable(QString::number(ratio)));
+        } else {
+            QCOMPARE(stats.enclosedCells, std::size_t(0));
+            QCOMPARE(io::ImageMetrics::relativeMse(with, without), 0.0);
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(HardCasesTest)
