@@ -539,8 +539,8 @@ void HardCasesTest::whiteFurnace()
     const float rho = 0.5f, emission = 1.0f;
     render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
-    // 1% with anisotropic mips (measured within 0.1% with 60- and 30-degree cones, cached or not), 3% with
-    // box-filtered ones (1.7% low): the room is closed, so the gathers count what the walls let through as
+    // 1% with anisotropic mips (measured within 0.15% with 60- and 30-degree cones, cached or not), 4% with
+    // box-filtered ones (2.4% low): the room is closed, so the gathers count what the walls let through as
     // the walls' light (RenderSettings::enclosedSpace). Without that, anisotropic mips read 2.7% low (a cone
     // leaving at an angle blends the wall it crosses with chains that see it edge-on) and box-filtered ones
     // 74% low (a one-voxel wall has opacity 2^-k at level k); docs/STABILITY.md. The irradiance cache gathers
@@ -551,7 +551,7 @@ void HardCasesTest::whiteFurnace()
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : { Case { false, 60.0f, false, 0.03f }, Case { true, 60.0f, false, 0.01f },
+    for (const Case c : { Case { false, 60.0f, false, 0.04f }, Case { true, 60.0f, false, 0.01f },
              Case { true, 30.0f, false, 0.01f }, Case { true, 30.0f, true, 0.01f } }) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
@@ -743,7 +743,7 @@ void HardCasesTest::convergedSolveEndsAtItsLimit_data()
 // in fewer iterations than stopping where the change is small took. Both rooms are closed, so their gathers
 // capture all around them (RenderSettings::enclosedSpace) and the light shrinks by rho per iteration: the
 // furnace's ratio is 0.8, where plain iterations need about 20 to change by less than 1%. Measured: the room
-// in 5 iterations, its furthest channel 0.14% over its limit (relative MSE 9e-7), the furnace in 9, 0.15%
+// in 4 iterations, its furthest channel 0.32% over its limit (relative MSE 4e-6), the furnace in 9, 0.15%
 // over (2.4e-6). With one ratio for all three colours the room's red (its red quad keeps more red)
 // ended 1.25% short; the tail is per channel now. The bounds: 6 and 10 iterations.
 void HardCasesTest::convergedSolveEndsAtItsLimit()
