@@ -10,17 +10,19 @@ namespace vct::render {
 
 namespace {
 
-/// The ring's tilt in sets of 2 to 9 cones: of the tilts whose weights can match the lobe's mean cosine (from
+/// The ring's tilt in sets of 4 to 9 cones: of the tilts whose weights can match the lobe's mean cosine (from
 /// 48.2 degrees, where the centre's weight reaches 0), the one that measured best on the reference scenes and
-/// closed rooms (docs/ACCURACY.md, "The cone set's quadrature").
+/// closed rooms (docs/ACCURACY.md, "The cone set's quadrature"). Sets of 2 and 3, split by Voronoi regions,
+/// keep the 45 degrees they were measured with.
 constexpr double kRingTiltDeg = 50.0;
+constexpr double kVoronoiRingTiltDeg = 45.0;
 
 std::vector<glm::vec3> coneAxes(int count)
 {
     std::vector<glm::vec3> axes;
     if (count <= 9) {
         axes.emplace_back(0.0f, 0.0f, 1.0f);
-        const float tilt = float(glm::radians(kRingTiltDeg));
+        const float tilt = float(glm::radians(count >= 4 ? kRingTiltDeg : kVoronoiRingTiltDeg));
         for (int i = 0; i < count - 1; ++i) {
             const float phi = glm::two_pi<float>() * float(i) / float(count - 1);
             axes.emplace_back(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi), std::cos(tilt));
@@ -46,7 +48,8 @@ ConeSet ConeSet::diffuse(int count)
     set.m_directions = coneAxes(count < 1 ? 1 : count);
     const std::size_t cones = set.m_directions.size();
     if (cones >= 4 && cones <= 9) {
-        // The normal and a ring of three or more (balanced around the normal): weights that make the estimate
+        // The normal and a ring of three or more (a ring of one or two cones has too few to share the lobe's
+        // directions around the normal): weights that make the estimate
         // exact for light constant over the hemisphere or varying linearly with cos(theta), i.e. summing to
         // one with a mean cosine of 2/3, the cosine lobe's. Voronoi shares (below) gave each ring cone the
         // directions down to the horizon, which its narrow cone never looks at, for light from near the

@@ -40,7 +40,10 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uCones", cones);
     program.set("uDiffuseTanHalf", std::tan(glm::radians(settings.diffuseApertureDeg * 0.5f)));
 
-    const bool enclosure = frame.enclosure && frame.enclosure->inUse && frame.enclosure->texture;
+    // Only where some space is closed in (open scenes keep their images bit for bit and skip the lookup), and
+    // not with a cone length set: there a cone's light beyond it is meant to be left out, not made up.
+    const bool enclosure = frame.enclosure && frame.enclosure->inUse && frame.enclosure->texture
+        && frame.enclosure->enclosedCells > 0 && settings.maxDistance < 0.0f;
     program.set("uEnclosureUsed", int(enclosure));
     if (enclosure) {
         const VoxelGridFrame& map = frame.enclosure->grid;

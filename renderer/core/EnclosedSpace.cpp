@@ -34,15 +34,19 @@ void EnclosedSpace::addTriangle(const glm::vec3& a, const glm::vec3& b, const gl
     const glm::dvec3 lo = glm::min(glm::min(glm::dvec3(a), glm::dvec3(b)), glm::dvec3(c));
     const glm::dvec3 hi = glm::max(glm::max(glm::dvec3(a), glm::dvec3(b)), glm::dvec3(c));
     glm::ivec3 first, last;
+    bool oneCell = true;
     for (int axis = 0; axis < 3; ++axis) {
+        const double from = std::floor(lo[axis] - kRoundingSlack), to = std::floor(hi[axis] + kRoundingSlack);
+        oneCell = oneCell && from == to;
         // Clamped as doubles: a finite coordinate far outside the grid would overflow an int.
-        first[axis] = int(std::clamp(std::floor(lo[axis] - kRoundingSlack), 0.0, double(m_resolution)));
-        last[axis] = int(std::clamp(std::floor(hi[axis] + kRoundingSlack), -1.0, double(m_resolution - 1)));
+        first[axis] = int(std::clamp(from, 0.0, double(m_resolution)));
+        last[axis] = int(std::clamp(to, -1.0, double(m_resolution - 1)));
         if (first[axis] > last[axis])
             return;
     }
-    // Most triangles of a detailed model lie within one cell: no test needed.
-    if (first == last) {
+    // Most triangles of a detailed model lie within one cell: no test needed. (Only where the triangle's own
+    // bounds are one cell: clamped to the grid, a large triangle's may be one cell it misses.)
+    if (oneCell) {
         std::uint8_t& state = m_cells[indexOf(first)];
         m_occupiedCells += state == Occupied ? 0 : 1;
         state = Occupied;

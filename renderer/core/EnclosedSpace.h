@@ -17,8 +17,9 @@ namespace vct::render {
  * crossing the voxels is light the voxels let through (a wall one voxel thick seen at a coarse level), not
  * light that left the scene: the diffuse gathers scale it back (common/ConeTracing.glsl, docs/DESIGN.md,
  * "Enclosed space"). Cells are marked occupied by an exact triangle/box test, so a watertight surface
- * separates the cells on its two sides; a crack wider than rounding lets the flood through, which only leaves
- * that space counted open, as without this map. Plain arithmetic, without GL.
+ * separates the cells on its two sides. An opening is seen only where whole cells lie in it: one narrower
+ * than a cell is always closed, one narrower than two may be, as it falls on the cells. Plain arithmetic,
+ * without GL.
  *
  * Grid space is in cells: cell k spans [k, k + 1) on each axis, the grid [0, resolution]^3.
  */
@@ -37,7 +38,7 @@ public:
     void addTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
     /** addTriangle() for each triangle of a mesh: @p positions in object space, taken to grid space by the
      * affine @p toGrid; @p indices three per triangle (a triangle with an index out of range is skipped and
-     * counted). */
+     * counted; a trailing one or two indices are ignored, as the renderer's draws ignore them). */
     void addMesh(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
         const glm::mat4& toGrid);
     /** Floods the empty cells joined to the grid's faces; every other empty cell is then enclosed. */

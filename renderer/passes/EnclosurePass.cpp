@@ -17,6 +17,17 @@ VoxelGridFrame EnclosurePass::mapGrid(const FrameContext& frame)
     return grid;
 }
 
+bool EnclosurePass::needed(const FrameContext& frame)
+{
+    return frame.settings.enclosedSpace && frame.enclosure
+        && (frame.shape.diffuseCones || frame.shape.irradianceCache || frame.shape.bounceVolume);
+}
+
+EnclosurePass::Key EnclosurePass::keyOf(const FrameContext& frame)
+{
+    return { frame.versions.staticGeometry, mapGrid(frame) };
+}
+
 PassDeclaration EnclosurePass::declare() const
 {
     return { {}, { resource::kEnclosure } };
@@ -24,24 +35,24 @@ PassDeclaration EnclosurePass::declare() const
 
 std::vector<TextureSlot> EnclosurePass::textures(const FrameContext& frame)
 {
-    gl::TextureDesc desc;
-    if (frame.settings.enclosedSpace && frame.enclosure)
-        desc = gl::TextureDesc::volume(GL_R8, mapGrid(frame).resolution);
-    gl::Texture* texture = frame.enclosure ? &frame.enclosure->texture : nullptr;
-    if (!texture)
+    if (!frame.enclosure)
         return {};
-    return { { resource::kEnclosure, ResourceGroup::Voxels, texture, desc } };
+    // Sampled filtered: a gather whose start lies in a wall's cell beside enclosed space still counts as
+    // enclosed (common/ConeTracing.glsl, startsEnclosed).
+    const gl::TextureDesc desc
+        = needed(frame) ? gl::TextureDesc::volume(GL_R8, mapGrid(frame).resolution) : gl::TextureDesc {};
+    return { { resource::kEnclosure, ResourceGroup::Voxels, &frame.enclosure->texture, desc } };
 }
 
 PassDecision EnclosurePass::plan(const FrameContext& frame) const
 {
     if (!frame.settings.enclosedSpace)
         return { PassDecision::Action::Skip, "enclosed_space=off" };
-    if (!frame.enclosure)
-        return { PassDecision::Action::Skip, "no map to fill" };
-    if (m_staticGeometry == 0)
+    if (!needed(frame))
+        return { PassDecision::Action::Skip, "no diffuse gather reads it" };
+    if (!m_key)
         return { PassDecision::Action::Run, "no valid output yet" };
-    if (m_staticGeometry != frame.versions.staticGeometry || !(m_grid == mapGrid(frame)))
+    if (!(*m_key == keyOf(frame)))
         return { PassDecision::Action::Run, "static geometry or grid changed" };
     return { PassDecision::Action::Reuse, "static geometry unchanged" };
 }
@@ -66,15 +77,14 @@ void EnclosurePass::execute(FrameContext& frame)
     map.enclosedCells = space.enclosedCells();
     map.inUse = true;
     ++map.version;
-    m_grid = grid;
-    m_staticGeometry = frame.versions.staticGeometry;
+    m_key = keyOf(frame);
 }
 
 void EnclosurePass::release(FrameContext& frame)
 {
     if (frame.enclosure)
         frame.enclosure->inUse = false;
-    m_staticGeometry = 0;
+    m_key.reset();
 }
 
 } // namespace vct::render

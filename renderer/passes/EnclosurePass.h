@@ -4,6 +4,7 @@
 #include "core/VoxelGridFrame.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace vct::render {
 
@@ -21,15 +22,24 @@ public:
     PassDecision plan(const FrameContext& frame) const override;
     void execute(FrameContext& frame) override;
     void release(FrameContext& frame) override;
-    void invalidate() override { m_staticGeometry = 0; }
+    void invalidate() override { m_key.reset(); }
 
     /** The grid the map is built on: the scene's, coarsened to at most EnclosedSpace::kMaxResolution cells a
      * side. */
     static VoxelGridFrame mapGrid(const FrameContext& frame);
+    /** Whether the frame has a diffuse gather to read the map: per-pixel cones, the irradiance cache, or the
+     * bounce iteration's cells. */
+    static bool needed(const FrameContext& frame);
 
 private:
-    std::uint64_t m_staticGeometry = 0;
-    VoxelGridFrame m_grid;
+    /// What the map was built from: the static meshes (their version) and the grid.
+    struct Key {
+        std::uint64_t staticGeometry = 0;
+        VoxelGridFrame grid;
+        bool operator==(const Key&) const = default;
+    };
+    static Key keyOf(const FrameContext& frame);
+    std::optional<Key> m_key;
 };
 
 } // namespace vct::render

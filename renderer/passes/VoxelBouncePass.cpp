@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace vct::render {
@@ -249,11 +250,17 @@ void VoxelBouncePass::judge(const Change& change, double tolerance)
     // under half of it: like the tail's own estimate (bounce/DecideTail.comp), q taken from two changes runs
     // short while it still settles.
     const double q = m_lastChange > 0.0 ? change.change / m_lastChange : -1.0;
-    if (q > 0.0 && q < kLargestRatio)
+    // Also for ratios too close to one to extrapolate with (a closed room of albedo 0.95, whose gathers
+    // capture all around them): there the changes still to come are many times the last one, and a tail from
+    // an earlier, smaller ratio stopped such a room 9% short of its limit while calling it converged. Light
+    // that does not shrink (albedo 1 in a closed room) never stops on its change.
+    if (q > 0.0 && q < 1.0)
         m_tail = q / (1.0 - q);
+    else if (q >= 1.0)
+        m_tail = std::numeric_limits<double>::infinity();
     m_lastChange = change.change;
-    m_done = m_iterations >= 2 && m_residual < tolerance
-        && m_residual * (m_tail > 0.0 ? m_tail : 1.0) < 0.5 * tolerance;
+    const double toCome = m_residual > 0.0 ? m_residual * (m_tail > 0.0 ? m_tail : 1.0) : 0.0;
+    m_done = m_iterations >= 2 && m_residual < tolerance && toCome < 0.5 * tolerance;
 }
 
 bool VoxelBouncePass::cellsOutdated(const VoxelVolume& v) const

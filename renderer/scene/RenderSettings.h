@@ -93,7 +93,7 @@ struct RenderSettings {
     /// In space no light can leave (a closed room: core/EnclosedSpace), each diffuse cone's light is scaled
     /// by 1 / its opacity: what the voxels let through there is a wall one voxel thick seen at a coarse
     /// level, not light leaving the scene, and a white furnace read 23% short of E / (1 - rho) without it
-    /// (docs/DESIGN.md, "Enclosed space").
+    /// (docs/DESIGN.md, "Enclosed space"). Not with a maxDistance set, which leaves out what lies beyond.
     bool enclosedSpace = true;
     /// The enclosed-space map's cells a side at most (a byte each: 2 MiB). On finer grids a cell spans
     /// several voxels, so an opening narrower than two cells (1/64 of the grid) may count as closed.

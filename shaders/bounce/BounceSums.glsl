@@ -11,7 +11,7 @@
 #define BOUNCE_SUM_CELL_CHANGE 2 // sum over the bounce cells of |gathered - gathered before|, r g b
 #define BOUNCE_SUM_CELL_TOTAL 5 // sum of gathered (rgb summed)
 #define BOUNCE_SUM_TAIL 6 // the tail q / (1 - q) this iteration's reinjection added per channel, r g b; 0 for none
-#define BOUNCE_SUM_TAIL_ERROR 9 // its estimated relative error (the largest channel's), -1 where none was decided
+#define BOUNCE_SUM_TAIL_ERROR 9 // its estimated error (largest channel), -1 before one can be estimated
 #define BOUNCE_SUMS_ITERATIONS 64 // iterations one solve can record (RenderSettings::kMaxBounces)
 
 #endif

@@ -157,7 +157,7 @@ void RenderPlanTest::cameraOnlyReusesEverythingButPerPixelWork()
     m_camera.position = glm::vec3(
         glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)) * glm::vec4(m_camera.position, 1.0f));
     planned();
-    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
+    for (const char* name : { "shadow maps", "enclosed space", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "reused");
     for (const char* name : { "g-buffer", "cone trace", "composite" })
         expectAction(name, "run");
@@ -283,7 +283,7 @@ void RenderPlanTest::voxelSettingsRebuildEverything()
     settings.voxelResolution = 16;
     m_gl.renderer->setSettings(settings);
     planned();
-    for (const char* name : { "shadow maps", "voxelize", "inject light", "mipmaps" })
+    for (const char* name : { "shadow maps", "enclosed space", "voxelize", "inject light", "mipmaps" })
         expectAction(name, "run");
     expectSameAsForced("grid resolution");
 }
@@ -323,6 +323,32 @@ void RenderPlanTest::settingsInvalidateOnlyWhatReadsThem()
     expectAction("voxelize", "reused");
     expectAction("inject light", "run");
     expectSameAsForced("direct light off");
+    m_gl.renderer->setSettings(original);
+    planned();
+
+    // The enclosed-space map reads the static meshes and the grid only; off, nothing keeps it, and on again
+    // it is built anew (its texture was freed).
+    settings = original;
+    settings.enclosedSpace = false;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("enclosed space", "skipped");
+    expectAction("voxelize", "reused");
+    expectSameAsForced("enclosed space off");
+    m_gl.renderer->setSettings(original);
+    planned();
+    expectAction("enclosed space", "run");
+    expectAction("voxelize", "reused");
+    expectSameAsForced("enclosed space on again");
+
+    // Nothing gathers diffuse light: the map is not built.
+    settings = original;
+    settings.indirectDiffuse = false;
+    settings.bounces = 1;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("enclosed space", "skipped");
+    expectSameAsForced("no diffuse gather");
 
     m_gl.renderer->setSettings(original);
     planned();
