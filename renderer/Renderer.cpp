@@ -527,6 +527,10 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     for (const ClipLevelPass* level : st.clipLevels)
         stats.lightConverged = stats.lightConverged && level->volume().bounceProgress.converged;
     stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
+    stats.bounceStoppedAtLimit = st.voxels.bounceProgress.stoppedAtLimit;
+    for (const ClipLevelPass* level : st.clipLevels)
+        stats.bounceStoppedAtLimit
+            = stats.bounceStoppedAtLimit || level->volume().bounceProgress.stoppedAtLimit;
     if (st.enclosure.inUse) {
         const std::size_t side = std::size_t(st.enclosure.grid.resolution);
         stats.enclosedCells = st.enclosure.enclosedCells;

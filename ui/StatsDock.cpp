@@ -151,7 +151,9 @@ void StatsDock::showStats(const render::FrameStats& stats)
                 .arg(stats.bounceIterations)
                 .arg(stats.bounceExtrapolated ? tr("extrapolated, est. error") : tr("residual"))
                 .arg(stats.bounceResidual, 0, 'g', 2)
-                .arg(stats.lightConverged ? QString() : tr(", converging…")));
+                .arg(stats.lightConverged
+                        ? (stats.bounceStoppedAtLimit ? tr(", stopped at the iteration limit") : QString())
+                        : tr(", converging…")));
     else
         m_bounces->setText(tr("one bounce"));
     // Where the gathers count what walls let through as the walls' light (enclosed_space).

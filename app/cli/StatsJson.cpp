@@ -30,6 +30,7 @@ QJsonObject statsToJson(const std::vector<render::FrameStats>& frames, const ren
     root["bounce_residual"] = last.bounceResidual;
     root["light_converged"] = last.lightConverged;
     root["bounce_extrapolated"] = last.bounceExtrapolated;
+    root["bounce_stopped_at_limit"] = last.bounceStoppedAtLimit;
     QJsonArray passes;
     std::vector<double> totals;
     for (const render::FrameStats& f : frames)

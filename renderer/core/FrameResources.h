@@ -30,6 +30,9 @@ struct BounceProgress {
     double residual = 0.0;
     bool converged = true; ///< false while iterations are still to come (spread over frames)
     bool extrapolated = false; ///< the iterations' geometric tail was added (VoxelBouncePass)
+    /// A converging solve ended at its iteration limit with more change still to come than the tolerance
+    /// allows (a closed room of albedo near 1): `converged` only says no more iterations will run.
+    bool stoppedAtLimit = false;
 };
 
 /**

@@ -49,6 +49,9 @@ struct FrameStats {
     double bounceResidual = 0.0;
     bool lightConverged = true;
     bool bounceExtrapolated = false; ///< the geometric tail was added (bounceResidual is then its error)
+    /// The solve ended at its iteration limit short of its tolerance (BounceProgress::stoppedAtLimit), in any
+    /// grid of a clipmap.
+    bool bounceStoppedAtLimit = false;
     /// Cells of the enclosed-space map (passes/EnclosurePass) no light can leave, and the map's cells: the
     /// diffuse gathers starting in them count what walls let through as the walls' light. 0 of 0 when off.
     std::size_t enclosedCells = 0;

@@ -334,6 +334,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_tail = -1.0;
         m_done = false;
         m_extrapolated = false;
+        m_stoppedAtLimit = false;
         const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         glClearTexImage(m_sums.id(), 0, GL_RED, GL_FLOAT, zero);
     }
@@ -362,9 +363,10 @@ void VoxelBouncePass::execute(FrameContext& frame)
             if (!m_done)
                 judge(change, double(frame.settings.bounceTolerance));
         }
+        m_stoppedAtLimit = !m_done && m_iterations >= limit;
         m_done = m_done || m_iterations >= limit;
     }
-    v.bounceProgress = { m_iterations, m_residual, m_done, m_extrapolated };
+    v.bounceProgress = { m_iterations, m_residual, m_done, m_extrapolated, m_stoppedAtLimit };
     m_radianceVersion = v.radianceVersion;
     m_grid = v.frame;
     m_key = keyOf(frame);

@@ -94,6 +94,7 @@ private:
     double m_tail = -1.0; ///< q / (1 - q) as last measured, -1 while unknown
     bool m_done = false;
     bool m_extrapolated = false;
+    bool m_stoppedAtLimit = false; ///< ended at the iteration limit short of the tolerance
     bool m_cellGeometryKnown = false; ///< bounceCellNormal holds the listed cells' normals and sides
     /// The bounced volume holds a solve over other voxels (a carried-over start): voxels no longer occupied
     /// must be cleared before the next reinjection.
