@@ -524,13 +524,13 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
     // In a clipmap the light has converged when every level's solve has (a finer level's also waits for the
     // coarser ones', whose light it gathers: VoxelBouncePass).
     stats.lightConverged = st.voxels.bounceProgress.converged;
-    for (const ClipLevelPass* level : st.clipLevels)
-        stats.lightConverged = stats.lightConverged && level->volume().bounceProgress.converged;
-    stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
     stats.bounceStoppedAtLimit = st.voxels.bounceProgress.stoppedAtLimit;
-    for (const ClipLevelPass* level : st.clipLevels)
+    for (const ClipLevelPass* level : st.clipLevels) {
+        stats.lightConverged = stats.lightConverged && level->volume().bounceProgress.converged;
         stats.bounceStoppedAtLimit
             = stats.bounceStoppedAtLimit || level->volume().bounceProgress.stoppedAtLimit;
+    }
+    stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
     if (st.enclosure.inUse) {
         const std::size_t side = std::size_t(st.enclosure.grid.resolution);
         stats.enclosedCells = st.enclosure.enclosedCells;

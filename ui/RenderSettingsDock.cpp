@@ -160,9 +160,8 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
            "(drop_back_faces)"));
     m_dropBackFaces->setObjectName(QStringLiteral("dropBackFacesCheck"));
     m_enclosedSpace = makeCheck(tr("Close enclosed space"),
-        tr("Where no light can leave (a closed room), diffuse cones count what walls one voxel thick let "
-           "through "
-           "as the walls' own light, so a closed room keeps its light (enclosed_space)"));
+        tr("Where no light can leave (a closed room), diffuse cones count what walls one voxel "
+           "thick let through as the walls' own light, so a closed room keeps its light (enclosed_space)"));
     m_enclosedSpace->setObjectName(QStringLiteral("enclosedSpaceCheck"));
     m_bounces = new QComboBox;
     m_bounces->setObjectName(QStringLiteral("bouncesCombo"));

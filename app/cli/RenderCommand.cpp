@@ -345,10 +345,9 @@ int RenderCommand::run(int argc, char** argv)
         // The light is written as far as it got: say so where the solve ran out of iterations, not silently.
         if (!timed.empty() && timed.back().bounceStoppedAtLimit)
             std::fprintf(stderr,
-                "vct-render: warning: the bounced light stopped at its limit of %d iterations still changing "
-                "by "
-                "%.2g per iteration (a closed room of albedo near 1 keeps its light for long); the image is "
-                "darker than its limit\n",
+                "vct-render: warning: the bounced light stopped at its limit of %d iterations, "
+                "still changing by %.2g per iteration (a closed room of albedo near 1 keeps its light "
+                "for long); the image is darker than its limit\n",
                 timed.back().bounceIterations, timed.back().bounceResidual);
         image = renderer.readFrame();
         if (parser.isSet(statsOption))

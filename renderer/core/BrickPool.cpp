@@ -4,7 +4,6 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <glm/vec4.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
@@ -75,19 +74,11 @@ int BrickPool::addTriangle(const glm::vec3& a, const glm::vec3& b, const glm::ve
 int BrickPool::addMesh(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
     const glm::mat4& toGrid, float reach)
 {
-    std::vector<glm::vec3> grid;
-    grid.reserve(positions.size());
-    for (const glm::vec3& p : positions)
-        grid.emplace_back(toGrid * glm::vec4(p, 1.0f));
     int added = 0;
-    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-        const std::uint32_t i0 = indices[i], i1 = indices[i + 1], i2 = indices[i + 2];
-        if (i0 >= grid.size() || i1 >= grid.size() || i2 >= grid.size()) {
-            ++m_skippedTriangles;
-            continue;
-        }
-        added += addTriangle(grid[i0], grid[i1], grid[i2], reach);
-    }
+    m_skippedTriangles += forEachGridTriangle(
+        positions, indices, toGrid, [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+            added += addTriangle(a, b, c, reach);
+        });
     return added;
 }
 

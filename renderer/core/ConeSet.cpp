@@ -49,9 +49,9 @@ ConeSet ConeSet::diffuse(int count)
     const std::size_t cones = set.m_directions.size();
     if (cones >= 4 && cones <= 9) {
         // The normal and a ring of three or more (a ring of one or two cones has too few to share the lobe's
-        // directions around the normal): weights that make the estimate
-        // exact for light constant over the hemisphere or varying linearly with cos(theta), i.e. summing to
-        // one with a mean cosine of 2/3, the cosine lobe's. Voronoi shares (below) gave each ring cone the
+        // directions around the normal): weights that make the estimate exact for light constant over the
+        // hemisphere or varying linearly with cos(theta), i.e. summing to one with a mean cosine of 2/3, the
+        // cosine lobe's. Voronoi shares (below) gave each ring cone the
         // directions down to the horizon, which its narrow cone never looks at, for light from near the
         // normal: two plates under an emitter gathered 1.26x the path tracer's light (1.04x with these).
         const double ring = (1.0 / 3.0) / (1.0 - std::cos(glm::radians(kRingTiltDeg)));

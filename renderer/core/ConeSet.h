@@ -15,7 +15,8 @@ namespace vct::render {
  */
 class ConeSet {
 public:
-    /** count 1..32: 1 = the normal; 2..9 = normal plus a ring tilted 50°; more = a cosine-weighted spiral. */
+    /** count 1..32: 1 = the normal; 2..9 = normal plus a ring tilted 50° (45° for 2 and 3); more = a
+     * cosine-weighted spiral. */
     static ConeSet diffuse(int count);
 
     const std::vector<glm::vec3>& directions() const { return m_directions; }

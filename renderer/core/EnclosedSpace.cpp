@@ -3,7 +3,6 @@
 #include "core/TriangleBoxOverlap.h"
 
 #include <glm/common.hpp>
-#include <glm/vec4.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
@@ -71,18 +70,8 @@ void EnclosedSpace::addTriangle(const glm::vec3& a, const glm::vec3& b, const gl
 void EnclosedSpace::addMesh(const std::vector<glm::vec3>& positions,
     const std::vector<std::uint32_t>& indices, const glm::mat4& toGrid)
 {
-    std::vector<glm::vec3> grid;
-    grid.reserve(positions.size());
-    for (const glm::vec3& p : positions)
-        grid.emplace_back(toGrid * glm::vec4(p, 1.0f));
-    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-        const std::uint32_t i0 = indices[i], i1 = indices[i + 1], i2 = indices[i + 2];
-        if (i0 >= grid.size() || i1 >= grid.size() || i2 >= grid.size()) {
-            ++m_skippedTriangles;
-            continue;
-        }
-        addTriangle(grid[i0], grid[i1], grid[i2]);
-    }
+    m_skippedTriangles += forEachGridTriangle(positions, indices, toGrid,
+        [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) { addTriangle(a, b, c); });
 }
 
 void EnclosedSpace::solve()
@@ -138,18 +127,20 @@ void EnclosedSpace::solve()
 
 bool EnclosedSpace::occupied(const glm::ivec3& cell) const
 {
-    if (glm::any(glm::lessThan(cell, glm::ivec3(0)))
-        || glm::any(glm::greaterThanEqual(cell, glm::ivec3(m_resolution))))
-        return false;
-    return m_cells[indexOf(cell)] == Occupied;
+    return stateOf(cell) == Occupied;
 }
 
 bool EnclosedSpace::enclosed(const glm::ivec3& cell) const
 {
+    return stateOf(cell) == Enclosed;
+}
+
+std::optional<std::uint8_t> EnclosedSpace::stateOf(const glm::ivec3& cell) const
+{
     if (glm::any(glm::lessThan(cell, glm::ivec3(0)))
         || glm::any(glm::greaterThanEqual(cell, glm::ivec3(m_resolution))))
-        return false;
-    return m_cells[indexOf(cell)] == Enclosed;
+        return std::nullopt;
+    return m_cells[indexOf(cell)];
 }
 
 std::vector<std::uint8_t> EnclosedSpace::texels() const

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace vct::render {
@@ -56,6 +57,8 @@ public:
 private:
     enum Cell : std::uint8_t { Empty, Occupied, Open, Enclosed };
     std::size_t indexOf(const glm::ivec3& cell) const;
+    /** The cell's state, nothing outside the grid. */
+    std::optional<std::uint8_t> stateOf(const glm::ivec3& cell) const;
 
     int m_resolution = 1;
     std::vector<std::uint8_t> m_cells;

@@ -126,9 +126,8 @@ const std::map<std::string, Field>& fields()
         t["drop_back_faces"] = makeField(&RenderSettings::dropBackFaces,
             "directional mips leave out surfaces facing the way a cone travels (on/off)");
         t["enclosed_space"] = makeField(&RenderSettings::enclosedSpace,
-            "in space no light can leave, diffuse cones count what walls let through as the walls' light; "
-            "not "
-            "with max_distance set (on/off)");
+            "in space no light can leave, diffuse cones count what walls let through as the "
+            "walls' light; not with max_distance set (on/off)");
         t["max_distance"]
             = makeField(&RenderSettings::maxDistance, "cone length in metres; negative = grid diagonal");
         t["indirect_res"] = makeField(
