@@ -437,6 +437,7 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     s.enclosedSpace = true;
     s.stepFactor = 1.0f;
     s.bounceCellSize = 4;
+    s.higherBounceCellSize = 8;
     switch (preset) {
     case Preset::Fast:
         // A coarse grid with isotropic mips: the cheapest full frame that is still on the frontier. Dense, as

@@ -100,6 +100,16 @@ struct VoxelVolume {
     gl::Texture bounceIrradiance;
     gl::Texture bounceIrradianceBack;
     gl::Texture bounceCellNormal;
+    /// With higher bounces on coarser cells (RenderSettings::higherBounceCellSize above bounceCellSize), the
+    /// same three over cells of that size: what they gathered from the current iterate; and what they
+    /// gathered from the first-bounce light, front and back (higherBounceBase*), which the reinjection
+    /// subtracts, so that the bounce cells' finer gather of that light stays its part
+    /// (passes/VoxelBouncePass).
+    gl::Texture higherBounceIrradiance;
+    gl::Texture higherBounceIrradianceBack;
+    gl::Texture higherBounceCellNormal;
+    gl::Texture higherBounceBase;
+    gl::Texture higherBounceBaseBack;
     /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of
     /// RenderSettings::irradianceCellSize^3 voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones
     /// gathered from the cell's surface along its normal (irradiance) and, for two-sided cells, against it

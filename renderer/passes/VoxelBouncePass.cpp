@@ -21,8 +21,25 @@ VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
     const RenderSettings& s = frame.settings;
     // The cones' key holds a clipmap's coarser levels' light: a level solved against a coarser level's light
     // still converging (an interactive view after a light edit) goes on when that light changes.
-    return { ConeTraceKey::of(frame), s.bounces, std::min(s.bounceCellSize, frame.voxels.frame.resolution),
+    return { ConeTraceKey::of(frame), s.bounces, cellSizeOf(frame), higherCellSizeOf(frame),
         s.bounceTolerance, frame.voxels.materialsVersion };
+}
+
+int VoxelBouncePass::cellSizeOf(const FrameContext& frame)
+{
+    return std::min(frame.settings.bounceCellSize, frame.voxels.frame.resolution);
+}
+
+int VoxelBouncePass::higherCellSizeOf(const FrameContext& frame)
+{
+    return std::max(
+        cellSizeOf(frame), std::min(frame.settings.higherBounceCellSize, frame.voxels.frame.resolution));
+}
+
+bool VoxelBouncePass::splitsBounces(const FrameContext& frame)
+{
+    // One iteration (bounces=2) gathers the first-bounce light only: nothing for coarser cells to take.
+    return higherCellSizeOf(frame) > cellSizeOf(frame) && iterationLimit(frame) > 1;
 }
 
 int VoxelBouncePass::iterationLimit(const FrameContext& frame)
@@ -63,8 +80,9 @@ PassDeclaration VoxelBouncePass::declare() const
 {
     using namespace resource;
     return { { kAlbedo, kNormal, kEmission, kRadiance, kEnclosure },
-        { kBounced, kBouncedDirectional, kBounceCells, kBounceCellsBack, kBounceCellNormals, kBounceCellMarks,
-            kBounceSums } };
+        { kBounced, kBouncedDirectional, kBounceCells, kBounceCellsBack, kBounceCellNormals,
+            kHigherBounceCells, kHigherBounceCellsBack, kHigherBounceCellNormals, kHigherBounceBase,
+            kHigherBounceBaseBack, kBounceCellMarks, kBounceSums } };
 }
 
 std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
@@ -75,12 +93,19 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
     // Only while the voxels carry bounces: otherwise cones go back to the first-bounce volume.
     const bool used = frame.shape.bounceVolume;
     const int res = v.frame.resolution;
-    const int cells = res / std::min(frame.settings.bounceCellSize, res);
+    const int cells = res / cellSizeOf(frame);
     const auto ifUsed = [used](const TextureDesc& desc) { return used ? desc : TextureDesc {}; };
     // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
-    const TextureDesc cell = TextureDesc::volume(GL_RGBA16F, cells).sampled(TextureDesc::Sampling::Nearest);
-    const TextureDesc cellNormal
-        = TextureDesc::volume(GL_RGBA8_SNORM, cells).sampled(TextureDesc::Sampling::Nearest);
+    const auto cellDesc
+        = [](int n) { return TextureDesc::volume(GL_RGBA16F, n).sampled(TextureDesc::Sampling::Nearest); };
+    const auto cellNormalDesc = [](int n) {
+        return TextureDesc::volume(GL_RGBA8_SNORM, n).sampled(TextureDesc::Sampling::Nearest);
+    };
+    const TextureDesc cell = cellDesc(cells);
+    const TextureDesc cellNormal = cellNormalDesc(cells);
+    const int higherCells = res / higherCellSizeOf(frame);
+    const auto ifSplit = [split = used && splitsBounces(frame)](
+                             const TextureDesc& desc) { return split ? desc : TextureDesc {}; };
     return { { kBounced, ResourceGroup::Voxels, &v.bounced,
                  ifUsed(v.level0(GL_RGBA16F, frame.shape.coneVolumeLevels)) },
         { kBouncedDirectional, ResourceGroup::Voxels, &v.bouncedDirectional,
@@ -88,6 +113,15 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
         { kBounceCells, ResourceGroup::Voxels, &v.bounceIrradiance, ifUsed(cell) },
         { kBounceCellsBack, ResourceGroup::Voxels, &v.bounceIrradianceBack, ifUsed(cell) },
         { kBounceCellNormals, ResourceGroup::Voxels, &v.bounceCellNormal, ifUsed(cellNormal) },
+        { kHigherBounceCells, ResourceGroup::Voxels, &v.higherBounceIrradiance,
+            ifSplit(cellDesc(higherCells)) },
+        { kHigherBounceCellsBack, ResourceGroup::Voxels, &v.higherBounceIrradianceBack,
+            ifSplit(cellDesc(higherCells)) },
+        { kHigherBounceCellNormals, ResourceGroup::Voxels, &v.higherBounceCellNormal,
+            ifSplit(cellNormalDesc(higherCells)) },
+        { kHigherBounceBase, ResourceGroup::Voxels, &v.higherBounceBase, ifSplit(cellDesc(higherCells)) },
+        { kHigherBounceBaseBack, ResourceGroup::Voxels, &v.higherBounceBaseBack,
+            ifSplit(cellDesc(higherCells)) },
         { kBounceCellMarks, ResourceGroup::Voxels, &m_builder.marks(),
             ifUsed(VoxelMipBuilder::marksDesc(res)) },
         { kBounceSums, ResourceGroup::PassState, &m_sums,
@@ -130,53 +164,114 @@ void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
     buildMips(frame);
 }
 
-void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
+void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Texture& front,
+    const gl::Texture& back, const gl::Texture& normals, bool fromFirstBounce, int sumsIteration,
+    bool firstGather, bool shiftIterate)
 {
+    // The irradiance cache's shader, over every occupied cell. Its first run on these voxels finds each
+    // cell's normal and sides; later ones read them back.
     VoxelVolume& v = frame.voxels;
     const bool anisotropic = frame.settings.anisotropicMips;
-    const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
-    const int res = v.frame.resolution;
-    const int cellSize = std::min(frame.settings.bounceCellSize, res);
-    const int cells = res / cellSize;
-
-    // Gather: the irradiance cache's shader, over every occupied cell, from the current iterate. Its first
-    // run on these voxels finds each cell's normal and sides; later ones read them back. When converging it
-    // also sums how much the gather changed.
+    const bool sums = sumsIteration >= 0;
     std::vector<std::string> defines;
     std::string name = "bounce cells";
     if (anisotropic) {
         defines.emplace_back("ANISOTROPIC");
         name += " (anisotropic)";
     }
-    if (m_cellGeometryKnown) {
+    if (grid.geometryKnown) {
         defines.emplace_back("CACHED_GEOMETRY");
         name += ", cell geometry known";
     }
-    if (converging) {
+    if (sums) {
         defines.emplace_back("CHANGE_SUMS");
         name += ", change sums";
     }
-    ConeTracingSetup::addDefines(defines, frame);
-    const gl::Program& gather = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
-    ConeTracingSetup::applyCellGather(gather, frame, anisotropic, cellSize, false, v.bounceIrradiance,
-        v.bounceIrradianceBack, v.bounceCellNormal);
-    if (m_cellGeometryKnown)
-        v.bounceCellNormal.bindUnit(2);
-    if (!compare && anisotropic) // the first iterate's level 0 (startFromFirstBounce)
-        v.radiance.bindUnit(5);
-    if (converging) {
-        v.bounceIrradiance.bindImage(0, 0, GL_READ_WRITE);
-        v.bounceIrradianceBack.bindImage(1, 0, GL_READ_WRITE);
-        m_sums.bindImage(3, 0, GL_READ_WRITE);
-        gather.set("uIteration", iteration);
-        gather.set("uFirstGather", compare ? 0 : 1);
+    if (shiftIterate) {
+        defines.emplace_back("SHIFT_ITERATE");
+        name += ", iterate shifted";
     }
-    gather.use();
-    m_cells.dispatchOverCells();
+    ConeTracingSetup::addDefines(defines, frame);
+    const gl::Program& program = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
+    ConeTracingSetup::applyCellGather(
+        program, frame, anisotropic, grid.cellSize, false, front, back, normals);
+    if (grid.geometryKnown)
+        normals.bindUnit(2);
+    if (fromFirstBounce && anisotropic) // its level 0 (startFromFirstBounce)
+        v.radiance.bindUnit(5);
+    if (sums) {
+        front.bindImage(0, 0, GL_READ_WRITE);
+        back.bindImage(1, 0, GL_READ_WRITE);
+        m_sums.bindImage(3, 0, GL_READ_WRITE);
+        program.set("uIteration", sumsIteration);
+        program.set("uFirstGather", firstGather ? 1 : 0);
+    }
+    if (shiftIterate) {
+        front.bindImage(0, 0, GL_READ_WRITE);
+        back.bindImage(1, 0, GL_READ_WRITE);
+        v.higherBounceIrradiance.bindImage(4, 0, GL_READ_WRITE);
+        v.higherBounceIrradianceBack.bindImage(5, 0, GL_READ_WRITE);
+    }
+    program.use();
+    grid.list.dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    m_cellGeometryKnown = true;
+    grid.geometryKnown = true;
+}
 
-    if (converging) {
+void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
+{
+    VoxelVolume& v = frame.voxels;
+    const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
+    // When converging the gather also sums how much it changed.
+    gather(frame, m_cells, v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal, !compare,
+        converging ? iteration : -1, !compare);
+    reinject(frame, compare, iteration);
+}
+
+void VoxelBouncePass::iterateSplit(FrameContext& frame, bool compare, bool firstOfSolve, int iteration)
+{
+    VoxelVolume& v = frame.voxels;
+    const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
+    const int sums = converging ? iteration : -1;
+    if (!firstOfSolve) {
+        gather(frame, m_higherCells, v.higherBounceIrradiance, v.higherBounceIrradianceBack,
+            v.higherBounceCellNormal, false, sums, false);
+        reinject(frame, true, iteration);
+        return;
+    }
+    // A solve starting from an earlier one gathers that iterate first, before the first-bounce light takes
+    // its place in the volume: the iteration goes on from it under the new first-bounce light. Its first
+    // reinjection adds the earlier solve's higher bounces (that iterate's gather less the earlier
+    // first-bounce light's): the new light's gather moves the iterate's by what it changed. Taken against the
+    // new light's gather instead, the first frame after a light edit was 4 times as far from the converged
+    // image, after a dragged object's move twice as far (tst_RenderPlan). Not after a step of the grid, whose
+    // earlier gathers are of other places.
+    if (compare) {
+        gather(frame, m_higherCells, v.higherBounceIrradiance, v.higherBounceIrradianceBack,
+            v.higherBounceCellNormal, false, sums, false);
+        startFromFirstBounce(frame);
+    }
+    // A cold start's change is what the first gather found, as in iterate(), at the higher bounces' scale
+    // that every later change of this solve is measured at.
+    gather(frame, m_higherCells, v.higherBounceBase, v.higherBounceBaseBack, v.higherBounceCellNormal, true,
+        compare ? -1 : sums, true, compare && m_baseInPlace);
+    gather(frame, m_cells, v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal, true, -1, true);
+    if (!compare) {
+        // The first iterate is the first-bounce light itself: its gather is the base's.
+        const int n = v.higherBounceBase.width();
+        glCopyImageSubData(v.higherBounceBase.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.higherBounceIrradiance.id(),
+            GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+        glCopyImageSubData(v.higherBounceBaseBack.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
+            v.higherBounceIrradianceBack.id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    reinject(frame, false, iteration);
+}
+
+void VoxelBouncePass::reinject(FrameContext& frame, bool compare, int iteration)
+{
+    VoxelVolume& v = frame.voxels;
+    if (frame.settings.bounces == RenderSettings::kConvergedBounces) {
         const gl::Program& decide
             = frame.shaders.program({ "bounce tail decision", { "bounce/DecideTail.comp" }, {} });
         decide.use();
@@ -188,18 +283,33 @@ void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 
-    // Reinject: L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
+    // L = L_direct + albedo * gathered, over the occupied voxels, with the residual's sums.
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     if (!compare || m_staleVoxels) // stale voxels of an earlier occupancy must not stay lit
         glClearTexImage(v.bounced.id(), 0, GL_RGBA, GL_FLOAT, zero);
     m_staleVoxels = false;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    const int res = v.frame.resolution;
+    const int cells = res / m_cells.cellSize;
+    const bool split = splitsBounces(frame);
     m_reinject->use();
     m_reinject->set("uGridOrigin", v.frame.origin);
     m_reinject->set("uVoxelSize", v.frame.voxelSize());
-    m_reinject->set("uCellVoxels", cellSize);
+    m_reinject->set("uCellVoxels", m_cells.cellSize);
     m_reinject->set("uCells", cells);
     m_reinject->set("uCellSize", v.frame.extent / float(cells));
+    m_reinject->set("uHigherBounces", split ? 1 : 0);
+    if (split) {
+        const int higherCells = res / m_higherCells.cellSize;
+        m_reinject->set("uHigherCellVoxels", m_higherCells.cellSize);
+        m_reinject->set("uHigherCells", higherCells);
+        m_reinject->set("uHigherCellSize", v.frame.extent / float(higherCells));
+        v.higherBounceIrradiance.bindUnit(3);
+        v.higherBounceIrradianceBack.bindUnit(4);
+        v.higherBounceCellNormal.bindUnit(5);
+        v.higherBounceBase.bindUnit(6);
+        v.higherBounceBaseBack.bindUnit(7);
+    }
     m_reinject->set("uCompare", compare ? 1 : 0);
     m_reinject->set("uIteration", iteration);
     v.albedo.bindUnit(0);
@@ -283,9 +393,8 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (!m_reinject)
         m_reinject = &frame.shaders.program({ "bounce reinjection", { "bounce/ReinjectBounce.comp" }, {} });
     const int res = v.frame.resolution;
-    const int cellSize = std::min(frame.settings.bounceCellSize, res);
-    const int cells = res / cellSize;
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
+    const bool split = splitsBounces(frame);
     const bool progressive = frame.bounceIterationsPerFrame > 0 && converging;
     const bool sameSolve = v.bounced && v.radianceVersion == m_radianceVersion && keyOf(frame) == m_key;
     const bool voxelsChanged = cellsOutdated(v);
@@ -296,11 +405,23 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_bouncedSerial = v.bounced.serial();
         m_brickLayout = v.brickLayout;
         m_cellsSerial = v.bounceIrradiance.serial();
-        m_cells.build(frame.shaders, v.albedo, VoxelRegion::whole(cells), cellSize);
+        m_cells.cellSize = cellSizeOf(frame);
+        m_cells.list.build(
+            frame.shaders, v.albedo, VoxelRegion::whole(res / m_cells.cellSize), m_cells.cellSize);
         m_builder.listCells(
             frame.shaders, res, v.frame.levelCount(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
         m_listedMaterials = v.materialsVersion;
-        m_cellGeometryKnown = false;
+        m_cells.geometryKnown = false;
+        m_higherCells.cellSize = 0;
+    }
+    if (split
+        && (m_higherCells.cellSize != higherCellSizeOf(frame)
+            || v.higherBounceIrradiance.serial() != m_higherCellsSerial)) {
+        m_higherCellsSerial = v.higherBounceIrradiance.serial();
+        m_higherCells.cellSize = higherCellSizeOf(frame);
+        m_higherCells.list.build(frame.shaders, v.albedo, VoxelRegion::whole(res / m_higherCells.cellSize),
+            m_higherCells.cellSize);
+        m_higherCells.geometryKnown = false;
     }
     // An interactive view starts a new solve from the last one, so that a light edit brightens or dims the
     // bounces smoothly instead of starting again from one bounce; and so does a change of voxels in the same
@@ -320,6 +441,9 @@ void VoxelBouncePass::execute(FrameContext& frame)
     const bool carryOver = progressive && m_iterations > 0
         && (!voxelsChanged || (sameBouncedTexture && (m_grid == v.frame || shift)));
     bool warm = sameSolve || carryOver;
+    // A grid that stepped moved its light (below) but not its higher-bounce cells' gathers, in cells coarser
+    // than the step: those no longer match it.
+    m_baseInPlace = m_grid == v.frame;
     m_staleVoxels = warm && voxelsChanged;
     if (!warm)
         startFromFirstBounce(frame);
@@ -349,7 +473,10 @@ void VoxelBouncePass::execute(FrameContext& frame)
         for (int k = 0; k < batch; ++k) {
             // The first iteration of a cold start gathers from the first-bounce light; its reinjection then
             // overwrites every occupied voxel, and the clear before it every other.
-            iterate(frame, warm, m_iterations + k);
+            if (split)
+                iterateSplit(frame, warm, m_iterations + k == 0, m_iterations + k);
+            else
+                iterate(frame, warm, m_iterations + k);
             warm = true;
         }
         ran += batch;

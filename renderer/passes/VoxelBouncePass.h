@@ -24,6 +24,11 @@ struct VoxelVolume;
  * added the change still to come itself because its estimated error is under the tolerance
  * (bounce/DecideTail.comp, docs/DESIGN.md).
  *
+ * With higherBounceCellSize above bounceCellSize the gather is split by what it gathers, as it is linear in
+ * the light: the first-bounce light L_direct on the bounce cells, once per solve, and what later iterates add
+ * to it on the coarser cells, as their gather of the iterate less their gather of L_direct; a later iteration
+ * gathers only the coarse cells (docs/DESIGN.md, "Higher bounces on coarser cells").
+ *
  * A camera move reuses it. Renderer::setBounceIterationsPerFrame spreads the iterations over frames for an
  * interactive view, starting each new solve from the last one (a light edit then changes the image smoothly);
  * by default a frame runs every iteration from the first-bounce volume, so a frame is a function of its
@@ -44,7 +49,7 @@ private:
     /** Everything the iteration depends on besides the first-bounce radiance itself. */
     struct SolveKey {
         ConeTraceKey cones;
-        int bounces = 0, cellSize = 0;
+        int bounces = 0, cellSize = 0, higherCellSize = 0;
         float tolerance = 0.0f;
         std::uint64_t materials = 0;
         bool operator==(const SolveKey& other) const = default;
@@ -54,15 +59,41 @@ private:
     bool cellsOutdated(const VoxelVolume& voxels) const;
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
+    /** The bounce cells' side and the higher bounces' (equal: every bounce on the bounce cells), in voxels.
+     */
+    static int cellSizeOf(const FrameContext& frame);
+    static int higherCellSizeOf(const FrameContext& frame);
+    /** Whether the solve gathers the bounces after the second on coarser cells (see the class comment). */
+    static bool splitsBounces(const FrameContext& frame);
     /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */
     void startFromFirstBounce(FrameContext& frame);
     void buildMips(FrameContext& frame);
+    /** The occupied cells of one size, and whether their normals and sides were found already. */
+    struct CellGrid {
+        OccupiedCellList list;
+        int cellSize = 0;
+        bool geometryKnown = false;
+    };
+    /**
+     * Gathers the diffuse cones over @p grid's cells into @p front and @p back (normals in @p normals), from
+     * the first-bounce light (@p fromFirstBounce) or the iterate in `bounced`. With @p sumsIteration >= 0
+     * also sums the change from what the cells held (nothing, with @p firstGather) into that iteration's
+     * sums. @p shiftIterate (a gather of new first-bounce light into the higher-bounce base): the
+     * higher-bounce cells' gather of the iterate moves by what the base changed.
+     */
+    void gather(FrameContext& frame, CellGrid& grid, const gl::Texture& front, const gl::Texture& back,
+        const gl::Texture& normals, bool fromFirstBounce, int sumsIteration, bool firstGather,
+        bool shiftIterate = false);
     /**
      * Iteration @p iteration of the solve (from 0): gather the cells from the current iterate, decide whether
      * to add the tail (converging only), reinject, filter; the sums go to the iteration's texels of m_sums.
      * @p compare: the current iterate is in `bounced` (else the first-bounce light is).
      */
     void iterate(FrameContext& frame, bool compare, int iteration);
+    /** The same split by splitsBounces(); @p firstOfSolve: this solve's first iteration. */
+    void iterateSplit(FrameContext& frame, bool compare, bool firstOfSolve, int iteration);
+    /** The tail decision (converging only), L = L_direct + albedo * gathered, the filter. */
+    void reinject(FrameContext& frame, bool compare, int iteration);
     /**
      * One iteration's sums over the occupied voxels, of |change| of the radiance and of the radiance, and the
      * tail its reinjection added (0 for none) with that tail's estimated relative error.
@@ -79,12 +110,14 @@ private:
     static constexpr int kBatchIterations = 8; ///< iterations an interactive frame runs between readbacks
 
     const gl::Program* m_reinject = nullptr;
-    OccupiedCellList m_cells; ///< the occupied bounce cells, relisted when the voxels change
+    CellGrid m_cells; ///< the occupied bounce cells, relisted when the voxels change
+    CellGrid m_higherCells; ///< the higher bounces' cells when the solve splits them off
     VoxelMipBuilder m_builder;
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
     std::uint64_t m_brickLayout = 0; ///< VoxelVolume::brickLayout when the cells were found
     std::uint64_t m_bouncedSerial = 0; ///< the textures m_cells and the builder's lists were found for
     std::uint64_t m_cellsSerial = 0;
+    std::uint64_t m_higherCellsSerial = 0; ///< the higher bounces' textures m_higherCells was found for
     std::uint64_t m_radianceVersion = 0; ///< the first-bounce radiance the current solve is for
     std::uint64_t m_listedMaterials = 0; ///< the voxels m_cells and the mip lists were made for
     SolveKey m_key;
@@ -95,11 +128,11 @@ private:
     bool m_done = false;
     bool m_extrapolated = false;
     bool m_stoppedAtLimit = false; ///< ended at the iteration limit short of the tolerance
-    bool m_cellGeometryKnown = false; ///< bounceCellNormal holds the listed cells' normals and sides
     /// The bounced volume holds a solve over other voxels (a carried-over start): voxels no longer occupied
     /// must be cleared before the next reinjection.
     bool m_staleVoxels = false;
     VoxelGridFrame m_grid; ///< where the grid was for the last solve
+    bool m_baseInPlace = false; ///< the grid has not moved since the higher-bounce base was gathered
 };
 
 } // namespace vct::render

@@ -110,6 +110,9 @@ const std::map<std::string, Field>& fields()
         t["bounces"] = bounces;
         t["bounce_cell"] = makeField(&RenderSettings::bounceCellSize,
             "cell side in voxels of the bounce iteration's gather: 2, 4 or 8");
+        t["higher_bounce_cell"] = makeField(&RenderSettings::higherBounceCellSize,
+            "cell side in voxels of the gathers of the third bounce on: 2, 4, 8 or 16, not below "
+            "bounce_cell");
         t["bounce_tolerance"] = makeField(&RenderSettings::bounceTolerance,
             "bounces=converged stops below this relative change (0.0001..0.5)");
         t["irradiance_cache"] = makeField(&RenderSettings::irradianceCache,
@@ -257,6 +260,13 @@ std::string RenderSettings::validate() const
             + std::to_string(bounces);
     if (bounceCellSize != 2 && bounceCellSize != 4 && bounceCellSize != 8)
         return "bounce_cell must be 2, 4 or 8, not " + std::to_string(bounceCellSize);
+    if (higherBounceCellSize != 2 && higherBounceCellSize != 4 && higherBounceCellSize != 8
+        && higherBounceCellSize != 16)
+        return "higher_bounce_cell must be 2, 4, 8 or 16, not " + std::to_string(higherBounceCellSize);
+    if (higherBounceCellSize < bounceCellSize)
+        return "higher_bounce_cell (" + std::to_string(higherBounceCellSize)
+            + ") must not be below bounce_cell (" + std::to_string(bounceCellSize)
+            + "): the later bounces vary more slowly than the second";
     if (!(bounceTolerance >= 1e-4f && bounceTolerance <= 0.5f))
         return "bounce_tolerance must be 0.0001..0.5";
     if (diffuseConeCount < 1 || diffuseConeCount > 32)

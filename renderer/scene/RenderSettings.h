@@ -62,6 +62,11 @@ struct RenderSettings {
     /// already varies slowly, so its cells can be coarser than the irradiance cache's; 8 takes a quarter off
     /// the bounce pass for a 7% worse atrium (docs/ACCURACY.md).
     int bounceCellSize = 4;
+    /// Voxels per side of the cells that gather the bounces after the second (2, 4, 8 or 16; at least
+    /// bounceCellSize, which is what equal means: every bounce on one grid of cells). A solve gathers the
+    /// first-bounce light once on the bounce cells and each later iterate's light above it, which has bounced
+    /// twice and varies more slowly still, on these (VoxelBouncePass, docs/DESIGN.md "Higher bounces").
+    int higherBounceCellSize = 8;
     /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to
     /// come estimated from how fast it shrinks, are both under this, or when adding that change still to come
     /// has an estimated error under this (VoxelBouncePass).

@@ -68,6 +68,19 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "bounce cells", chain(cells, 8, false) });
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
+        // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): four rgba16f, the normal rgba8
+        // snorm.
+        const std::uint64_t higherCells
+            = std::max<std::uint64_t>(n / std::uint64_t(settings.higherBounceCellSize), 1);
+        if (settings.higherBounceCellSize > settings.bounceCellSize
+            && (settings.bounces == RenderSettings::kConvergedBounces || settings.bounces > 2)) {
+            textures.push_back({ "higher-bounce cells", chain(higherCells, 8, false) });
+            textures.push_back({ "higher-bounce cells, back faces", chain(higherCells, 8, false) });
+            textures.push_back({ "higher-bounce cell normals", chain(higherCells, 4, false) });
+            textures.push_back({ "higher-bounce cells, first-bounce light", chain(higherCells, 8, false) });
+            textures.push_back(
+                { "higher-bounce cells, first-bounce light, back faces", chain(higherCells, 8, false) });
+        }
     }
     // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory
     // names them.

@@ -3,6 +3,9 @@
 // the cone weights splitting the cosine lobe (sum_i w_i L_i = E / pi, and a Lambertian surface sends
 // albedo / pi * E), where sum_i w_i L_i is what the bounce cells gathered from the previous iterate
 // (irradiance/GatherCells.comp over every occupied cell), looked up as a pixel looks up the irradiance cache.
+// With the higher bounces on coarser cells, the bounce cells hold the gather of L_direct, and the coarser cells
+// add the gather of the previous iterate less theirs of L_direct: the same sum, as the gather is linear in
+// the light, with what the later bounces add gathered at their coarser scale.
 // The step also sums how much the voxels changed and how bright they are: the residual that decides when the
 // iteration has converged.
 #extension GL_NV_shader_atomic_float : require
@@ -24,6 +27,17 @@ uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform int uCellVoxels; // voxels per bounce cell side
 uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
+// The higher bounces' cells (passes/VoxelBouncePass), when the solve splits them off: their gather of the
+// previous iterate, its cells' normals, and their gather of L_direct.
+uniform bool uHigherBounces;
+uniform int uHigherCellVoxels;
+uniform int uHigherCells;
+uniform float uHigherCellSize; // metres
+layout(binding = 3) uniform sampler3D uHigher;
+layout(binding = 4) uniform sampler3D uHigherBack;
+layout(binding = 5) uniform sampler3D uHigherNormal;
+layout(binding = 6) uniform sampler3D uHigherBase;
+layout(binding = 7) uniform sampler3D uHigherBaseBack;
 
 #include "common/IrradianceLookup.glsl"
 
@@ -31,19 +45,20 @@ uniform bool uCompare;   // the previous iterate is in uBounced (else it was jus
 // voxel, or two surfaces pressed together) sends the same radiance both ways, so it takes the mean of what
 // reaches its two sides: that keeps the power it reflects, where the sum would send each side's light out of
 // both sides and, two faces lighting each other, grow without bound from one iteration to the next.
-vec3 ownCell(ivec3 voxel, vec3 n, bool faced)
+vec3 ownCell(sampler3D front, sampler3D back, sampler3D normals, sampler3D minusFront, sampler3D minusBack,
+    bool subtract, int cellVoxels, ivec3 voxel, vec3 n, bool faced)
 {
-    ivec3 cell = voxel / uCellVoxels;
-    vec4 cellNormal = texelFetch(uCellNormal, cell, 0);
+    ivec3 cell = voxel / cellVoxels;
+    vec4 cellNormal = texelFetch(normals, cell, 0);
     if (cellNormal.w <= 0.0)
         return vec3(0.0);
-    vec4 front = texelFetch(uIrradiance, cell, 0);
+    vec3 frontLight = texelFetch(front, cell, 0).rgb - (subtract ? texelFetch(minusFront, cell, 0).rgb : vec3(0.0));
     if (cellNormal.w < 0.75) // one-sided (common/IrradianceLookup.glsl)
-        return max(front.rgb, vec3(0.0));
-    vec4 back = texelFetch(uIrradianceBack, cell, 0);
+        return max(frontLight, vec3(0.0));
+    vec3 backLight = texelFetch(back, cell, 0).rgb - (subtract ? texelFetch(minusBack, cell, 0).rgb : vec3(0.0));
     if (!faced)
-        return 0.5 * (max(front.rgb, vec3(0.0)) + max(back.rgb, vec3(0.0)));
-    return max(dot(n, cellNormal.xyz) >= 0.0 ? front.rgb : back.rgb, vec3(0.0));
+        return 0.5 * (max(frontLight, vec3(0.0)) + max(backLight, vec3(0.0)));
+    return max(dot(n, cellNormal.xyz) >= 0.0 ? frontLight : backLight, vec3(0.0));
 }
 
 void main()
@@ -62,7 +77,18 @@ void main()
             vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
             vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
             vec4 looked;
-            vec3 gathered = faced && lookUpIrradiance(p, n, looked) ? looked.rgb : ownCell(voxel, n, faced);
+            vec3 gathered = faced && lookUpIrradiance(p, n, looked)
+                ? looked.rgb
+                : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
+                    uCellVoxels, voxel, n, faced);
+            if (uHigherBounces) {
+                // Rounding can take a difference of two gathers of nearly the same light below zero.
+                gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack,
+                                         true, uHigherCells, uHigherCellSize, p, n, looked)
+                    ? max(looked.rgb, vec3(0.0))
+                    : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
+                        uHigherCellVoxels, voxel, n, faced);
+            }
             result.rgb += albedo.rgb * gathered * albedo.a;
         }
         // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).

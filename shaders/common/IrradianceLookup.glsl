@@ -14,29 +14,35 @@ uniform float uCellSize;    // metres
 // (within 60 degrees, weighted by cos^4), so light from the far side of a wall or a corner's other face does
 // not bleed in; a two-sided cell offers whichever of its sides faces the pixel. The small floor on the trilinear weight lets a lone
 // matching cell count. False when no cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
-bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
+// Over any cells laid out as the cache's (`cells` per side, cellSize metres each); with `subtract`, of what
+// front and back hold less what minusFront and minusBack do, with the same weights (the bounce iteration's
+// higher bounces, bounce/ReinjectBounce.comp).
+bool lookUpCells(sampler3D front, sampler3D back, sampler3D normals, sampler3D minusFront, sampler3D minusBack,
+    bool subtract, int cells, float cellSize, vec3 p, vec3 n, out vec4 result)
 {
     ivec3 base;
     vec3 f;
-    irradianceCellBlock(p, uGridOrigin, uCellSize, base, f);
+    irradianceCellBlock(p, uGridOrigin, cellSize, base, f);
     vec4 sum = vec4(0.0);
     float weightSum = 0.0;
     for (int i = 0; i < 8; ++i) {
         ivec3 corner = ivec3(i & 1, (i >> 1) & 1, i >> 2);
         ivec3 c = base + corner;
-        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(uCells))))
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(cells))))
             continue;
-        vec4 cellNormal = texelFetch(uCellNormal, c, 0);
+        vec4 cellNormal = texelFetch(normals, c, 0);
         if (cellNormal.w <= 0.0)
             continue;
         float agreement = dot(cellNormal.xyz, n);
-        bool back = cellNormal.w > 0.75 && agreement < 0.0;
+        bool backSide = cellNormal.w > 0.75 && agreement < 0.0;
         agreement = abs(agreement);
         if (agreement < 0.5)
             continue;
-        vec4 cached = back ? texelFetch(uIrradianceBack, c, 0) : texelFetch(uIrradiance, c, 0);
+        vec4 cached = backSide ? texelFetch(back, c, 0) : texelFetch(front, c, 0);
         if (cached.a < 0.0)
             continue;
+        if (subtract)
+            cached -= backSide ? texelFetch(minusBack, c, 0) : texelFetch(minusFront, c, 0);
         vec3 t = mix(vec3(1.0) - f, f, vec3(corner));
         float a2 = agreement * agreement;
         float w = (t.x * t.y * t.z + 1e-3) * a2 * a2;
@@ -47,4 +53,10 @@ bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
         return false;
     result = sum / weightSum;
     return true;
+}
+
+bool lookUpIrradiance(vec3 p, vec3 n, out vec4 result)
+{
+    return lookUpCells(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false, uCells,
+        uCellSize, p, n, result);
 }

@@ -31,8 +31,17 @@ layout(binding = 1) uniform sampler3D uNormal;
 uniform int uIteration; // this iteration's index in the solve
 uniform bool uFirstGather; // what the cells hold is not an earlier gather of this solve: count it as nothing
 #define GATHER_ACCESS
+#elif defined(SHIFT_ITERATE)
+#define GATHER_ACCESS
 #else
 #define GATHER_ACCESS writeonly
+#endif
+#ifdef SHIFT_ITERATE
+// A solve of the bounce iteration that goes on from an earlier one (passes/VoxelBouncePass) under new
+// first-bounce light: this gather of the new light replaces the higher-bounce cells' gather of the old one, and
+// the gather of the iterate moves by as much, so that the two still differ by the earlier solve's higher bounces.
+layout(rgba16f, binding = 4) uniform image3D uIterate;
+layout(rgba16f, binding = 5) uniform image3D uIterateBack;
 #endif
 layout(rgba16f, binding = 0) GATHER_ACCESS uniform image3D uIrradiance;     // along the cell normal
 layout(rgba16f, binding = 1) GATHER_ACCESS uniform image3D uIrradianceBack; // against it, two-sided cells only
@@ -74,6 +83,18 @@ void storeGathered(ivec3 cell, bool front, vec4 gathered)
     vec3 before = uFirstGather ? vec3(0.0) : max((front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell)).rgb, vec3(0.0));
     gChange += abs(gathered.rgb - before);
     gTotal += dot(gathered.rgb, vec3(1.0));
+#endif
+#ifdef SHIFT_ITERATE
+    vec4 replaced = front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell);
+    vec4 iterate = front ? imageLoad(uIterate, cell) : imageLoad(uIterateBack, cell);
+    // A cell the earlier voxels did not hold has no earlier first-bounce gather: the iterate's is taken against
+    // this one (moved by all of it, the new gather would count twice).
+    if (replaced.a >= 0.0)
+        iterate.rgb += gathered.rgb - replaced.rgb;
+    if (front)
+        imageStore(uIterate, cell, iterate);
+    else
+        imageStore(uIterateBack, cell, iterate);
 #endif
     if (front)
         imageStore(uIrradiance, cell, gathered);

@@ -488,7 +488,9 @@ void RenderPlanTest::draggedObjectKeepsTheConvergedLight()
         "from a frame that iterated from scratch; means %.4f / %.4f",
         firstFrame, againstScratch, double(io::ImageMetrics::meanRadiance(firstAfterMove).r),
         double(io::ImageMetrics::meanRadiance(fromScratch).r));
-    QVERIFY2(firstFrame < 2e-3, qPrintable(QString::number(firstFrame)));
+    // 1.6e-3 with every bounce on the bounce cells; 2.7e-3 with the higher bounces on cells of 8^3 voxels,
+    // four to this grid's side, in which the object's move shifts where a cell gathers from.
+    QVERIFY2(firstFrame < 4e-3, qPrintable(QString::number(firstFrame)));
     QVERIFY2(againstScratch < 1e-3, qPrintable(QString::number(againstScratch)));
     m_gl.renderer->setMeshTransform(std::size_t(m_dynamicMesh), glm::mat4(1.0f));
 }

@@ -323,6 +323,7 @@ void TstDocks::renderSettingsPresetIsOneUndoStep()
     QVERIFY(s.dropBackFaces);
     QCOMPARE(s.bounces, render::RenderSettings::kConvergedBounces);
     QCOMPARE(s.bounceCellSize, 4);
+    QCOMPARE(s.higherBounceCellSize, 8);
     QCOMPARE(s.indirectDivisor, 4);
     QCOMPARE(document->undoStack()->count(), 1);
     QVERIFY(child<QPushButton>(&dock, "presetHigh")->isChecked());

@@ -226,6 +226,13 @@ void ConeMathTest::settingsParseAndReject()
     QVERIFY(!s.set("step", "nan").empty());
     QVERIFY(!s.set("no_such_key", "1").empty());
     QCOMPARE(s.voxelResolution, 64); // a rejected value leaves the settings as they were
+    // The higher bounces' cells: a size of their own, never finer than the bounce cells'.
+    QVERIFY(s.set("higher_bounce_cell", "16").empty());
+    QVERIFY(!s.set("higher_bounce_cell", "3").empty());
+    QVERIFY(s.set("bounce_cell", "8").empty());
+    const std::string finer = s.set("higher_bounce_cell", "4");
+    QVERIFY2(finer.find("bounce_cell (8)") != std::string::npos, finer.c_str());
+    QCOMPARE(s.higherBounceCellSize, 16);
 }
 
 QTEST_GUILESS_MAIN(ConeMathTest)
