@@ -417,6 +417,14 @@ void VoxelBouncePass::execute(FrameContext& frame)
     if (split
         && (m_higherCells.cellSize != higherCellSizeOf(frame)
             || v.higherBounceIrradiance.serial() != m_higherCellsSerial)) {
+        if (v.higherBounceIrradiance.serial() != m_higherCellsSerial) {
+            // New textures hold no earlier base: a solve going on from an iterate of a solve that did not
+            // split (or of other cells) takes that iterate's gather against the new base's, not against
+            // whatever the texture's memory held.
+            const float none[4] = { 0.0f, 0.0f, 0.0f, -1.0f };
+            glClearTexImage(v.higherBounceBase.id(), 0, GL_RGBA, GL_FLOAT, none);
+            glClearTexImage(v.higherBounceBaseBack.id(), 0, GL_RGBA, GL_FLOAT, none);
+        }
         m_higherCellsSerial = v.higherBounceIrradiance.serial();
         m_higherCells.cellSize = higherCellSizeOf(frame);
         m_higherCells.list.build(frame.shaders, v.albedo, VoxelRegion::whole(res / m_higherCells.cellSize),
