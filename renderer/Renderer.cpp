@@ -310,6 +310,8 @@ Renderer::~Renderer()
 
 void Renderer::setScene(const Scene& scene)
 {
+    // A build left by a frame that threw reads the meshes about to go.
+    m_state->enclosure.abandon();
     m_state->scene = std::make_unique<GpuScene>(scene);
     ++m_state->sceneUploads;
     ++m_state->versions.staticGeometry;
@@ -531,6 +533,8 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
             = stats.bounceStoppedAtLimit || level->volume().bounceProgress.stoppedAtLimit;
     }
     stats.bounceExtrapolated = st.voxels.bounceProgress.extrapolated;
+    // A build no pass read this frame (none traced a diffuse cone) is taken now, while its scene stands.
+    st.enclosure.finish();
     if (st.enclosure.inUse) {
         const std::size_t side = std::size_t(st.enclosure.grid.resolution);
         stats.enclosedCells = st.enclosure.enclosedCells;

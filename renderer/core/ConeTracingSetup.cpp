@@ -42,6 +42,8 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
 
     // Only where some space is closed in (open scenes keep their images bit for bit and skip the lookup), and
     // not with a cone length set: there a cone's light beyond it is meant to be left out, not made up.
+    if (frame.enclosure)
+        frame.enclosure->finish();
     const bool enclosure = frame.enclosure && frame.enclosure->inUse && frame.enclosure->texture
         && frame.enclosure->enclosedCells > 0 && settings.maxDistance < 0.0f;
     program.set("uEnclosureUsed", int(enclosure));

@@ -2,6 +2,7 @@
 
 #include "common/DirectionalStack.glsl"
 #include "core/BrickPool.h"
+#include "core/EnclosureMap.h"
 #include "core/OccupiedCellList.h"
 #include "core/ResourceTable.h"
 #include "core/VoxelGridFrame.h"
@@ -33,19 +34,6 @@ struct BounceProgress {
     /// A converging solve ended at its iteration limit with more change still to come than the tolerance
     /// allows (a closed room of albedo near 1): `converged` only says no more iterations will run.
     bool stoppedAtLimit = false;
-};
-
-/**
- * Where the grid around the scene is closed in (core/EnclosedSpace): r8, 1 in empty cells no light can leave,
- * 0 elsewhere, made by EnclosurePass from the static meshes. The diffuse gathers that start in such a cell
- * scale what each cone saw over what the voxels let through (common/ConeTracing.glsl).
- */
-struct EnclosureMap {
-    gl::Texture texture;
-    VoxelGridFrame grid; ///< the cells of `texture`
-    std::uint64_t version = 0; ///< grows with each rebuild
-    std::size_t enclosedCells = 0;
-    bool inUse = false; ///< built for the current frame's settings (enclosed_space=on)
 };
 
 /** The voxel grid's textures. Level 0 of `radiance` is written by injection, the rest by the mip pass. */

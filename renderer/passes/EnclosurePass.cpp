@@ -7,6 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <future>
+#include <vector>
 
 namespace vct::render {
 
@@ -60,21 +62,30 @@ PassDecision EnclosurePass::plan(const FrameContext& frame) const
 void EnclosurePass::execute(FrameContext& frame)
 {
     EnclosureMap& map = *frame.enclosure;
+    map.abandon();
     const VoxelGridFrame grid = mapGrid(frame);
-    EnclosedSpace space(grid.resolution);
     const glm::mat4 toGrid = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / grid.voxelSize()))
         * glm::translate(glm::mat4(1.0f), -grid.origin);
+    // The build reads the scene's static meshes in place: the renderer takes it (EnclosureMap::finish) before
+    // the frame ends, while the scene cannot change.
+    struct Part {
+        const Mesh* mesh;
+        glm::mat4 toGrid;
+    };
+    std::vector<Part> parts;
     for (const Mesh& mesh : frame.scene.scene().meshes)
         if (mesh.visible && !mesh.dynamic)
-            space.addMesh(mesh.positions, mesh.indices, toGrid * mesh.transform);
-    space.solve();
-    const std::vector<std::uint8_t> texels = space.texels();
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage3D(map.texture.id(), 0, 0, 0, 0, grid.resolution, grid.resolution, grid.resolution,
-        GL_RED, GL_UNSIGNED_BYTE, texels.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            parts.push_back({ &mesh, toGrid * mesh.transform });
+    // On a worker thread: the marking and the flood are CPU work the GL's voxelization, issued next, does not
+    // wait for (docs/BENCHMARKS.md, "Enclosed space").
+    map.pending = std::async(std::launch::async, [parts = std::move(parts), resolution = grid.resolution] {
+        EnclosedSpace space(resolution);
+        for (const Part& part : parts)
+            space.addMesh(part.mesh->positions, part.mesh->indices, part.toGrid);
+        space.solve();
+        return EnclosureMap::Build { space.texels(), space.enclosedCells() };
+    });
     map.grid = grid;
-    map.enclosedCells = space.enclosedCells();
     map.inUse = true;
     ++map.version;
     m_key = keyOf(frame);
@@ -82,8 +93,10 @@ void EnclosurePass::execute(FrameContext& frame)
 
 void EnclosurePass::release(FrameContext& frame)
 {
-    if (frame.enclosure)
+    if (frame.enclosure) {
+        frame.enclosure->abandon();
         frame.enclosure->inUse = false;
+    }
     m_key.reset();
 }
 
