@@ -39,7 +39,7 @@ int VoxelBouncePass::higherCellSizeOf(const FrameContext& frame)
 bool VoxelBouncePass::splitsBounces(const FrameContext& frame)
 {
     // One iteration (bounces=2) gathers the first-bounce light only: nothing for coarser cells to take.
-    return higherCellSizeOf(frame) > cellSizeOf(frame) && iterationLimit(frame) > 1;
+    return frame.settings.splitsHigherBounces(frame.voxels.frame.resolution);
 }
 
 int VoxelBouncePass::iterationLimit(const FrameContext& frame)

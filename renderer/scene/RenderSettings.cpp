@@ -1,6 +1,7 @@
 #include "scene/RenderSettings.h"
 #include "scene/VoxelTextureEstimate.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -240,6 +241,13 @@ std::string RenderSettings::setAll(const std::vector<std::pair<std::string, std:
         return problem;
     *this = candidate;
     return {};
+}
+
+bool RenderSettings::splitsHigherBounces(int resolution) const
+{
+    const int cell = std::min(bounceCellSize, resolution);
+    const bool laterIterations = bounces == kConvergedBounces || bounces > 2;
+    return std::max(cell, std::min(higherBounceCellSize, resolution)) > cell && laterIterations;
 }
 
 std::string RenderSettings::validate() const

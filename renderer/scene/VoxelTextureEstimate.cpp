@@ -71,9 +71,8 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): four rgba16f, the normal rgba8
         // snorm.
         const std::uint64_t higherCells
-            = std::max<std::uint64_t>(n / std::uint64_t(settings.higherBounceCellSize), 1);
-        if (settings.higherBounceCellSize > settings.bounceCellSize
-            && (settings.bounces == RenderSettings::kConvergedBounces || settings.bounces > 2)) {
+            = n / std::min<std::uint64_t>(std::uint64_t(settings.higherBounceCellSize), n);
+        if (settings.splitsHigherBounces(int(n))) {
             textures.push_back({ "higher-bounce cells", chain(higherCells, 8, false) });
             textures.push_back({ "higher-bounce cells, back faces", chain(higherCells, 8, false) });
             textures.push_back({ "higher-bounce cell normals", chain(higherCells, 4, false) });

@@ -529,6 +529,16 @@ void HardCasesTest::voxelMemoryEstimateMatchesTheRenderer()
                 QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
                     settings.voxelMemoryBytes({ .emission = false, .areaLights = false }));
             }
+    // Bounce cells as large as the grid: no coarser cells to split the higher bounces off onto.
+    {
+        render::RenderSettings settings;
+        settings.voxelResolution = 8;
+        settings.bounceCellSize = 8;
+        settings.higherBounceCellSize = 16;
+        render(room(), settings, 16);
+        QCOMPARE(std::uint64_t(m_gl.renderer->voxelBytes()),
+            settings.voxelMemoryBytes({ .emission = false, .areaLights = false }));
+    }
     // What a scene adds: an opacity chain for an area light's shadows, an emission volume for emissive
     // materials, and nothing once they are gone; a moving object adds nothing (its updates redraw the static
     // triangles near it instead of keeping a copy).
