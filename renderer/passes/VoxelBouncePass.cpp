@@ -471,7 +471,10 @@ void VoxelBouncePass::execute(FrameContext& frame)
         glClearTexImage(m_sums.id(), 0, GL_RED, GL_FLOAT, zero);
     }
     const int limit = iterationLimit(frame);
-    const int budget = progressive ? frame.bounceIterationsPerFrame : limit;
+    // A split solve's first iteration gathers the new first-bounce light on both sizes of cells and costs
+    // about three later ones: a frame that starts a solve (each frame of a dragged light) runs that one only,
+    // and the frames that go on with the same solve run the whole budget.
+    const int budget = progressive ? (split && !sameSolve ? 1 : frame.bounceIterationsPerFrame) : limit;
     // Iterations run in batches with one readback of their residuals after each: a frame of the interactive
     // view runs its whole budget and then waits once, instead of stalling after every iteration; a frame that
     // converges fully decides after each one, so that it stops where the change is small enough.
