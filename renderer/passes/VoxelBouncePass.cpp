@@ -21,19 +21,10 @@ VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
     const RenderSettings& s = frame.settings;
     // The cones' key holds a clipmap's coarser levels' light: a level solved against a coarser level's light
     // still converging (an interactive view after a light edit) goes on when that light changes.
-    return { ConeTraceKey::of(frame), s.bounces, cellSizeOf(frame), higherCellSizeOf(frame),
-        s.bounceTolerance, frame.voxels.materialsVersion };
-}
-
-int VoxelBouncePass::cellSizeOf(const FrameContext& frame)
-{
-    return std::min(frame.settings.bounceCellSize, frame.voxels.frame.resolution);
-}
-
-int VoxelBouncePass::higherCellSizeOf(const FrameContext& frame)
-{
-    return std::max(
-        cellSizeOf(frame), std::min(frame.settings.higherBounceCellSize, frame.voxels.frame.resolution));
+    return { ConeTraceKey::of(frame), s.bounces,
+        frame.settings.bounceCellVoxels(frame.voxels.frame.resolution),
+        frame.settings.higherBounceCellVoxels(frame.voxels.frame.resolution), s.bounceTolerance,
+        frame.voxels.materialsVersion };
 }
 
 bool VoxelBouncePass::splitsBounces(const FrameContext& frame)
@@ -93,7 +84,7 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
     // Only while the voxels carry bounces: otherwise cones go back to the first-bounce volume.
     const bool used = frame.shape.bounceVolume;
     const int res = v.frame.resolution;
-    const int cells = res / cellSizeOf(frame);
+    const int cells = res / frame.settings.bounceCellVoxels(res);
     const auto ifUsed = [used](const TextureDesc& desc) { return used ? desc : TextureDesc {}; };
     // Normals and sides fit 8-bit snorm (common/IrradianceLookup.glsl).
     const auto cellDesc
@@ -103,7 +94,7 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
     };
     const TextureDesc cell = cellDesc(cells);
     const TextureDesc cellNormal = cellNormalDesc(cells);
-    const int higherCells = res / higherCellSizeOf(frame);
+    const int higherCells = res / frame.settings.higherBounceCellVoxels(res);
     const auto ifSplit = [split = used && splitsBounces(frame)](
                              const TextureDesc& desc) { return split ? desc : TextureDesc {}; };
     return { { kBounced, ResourceGroup::Voxels, &v.bounced,
@@ -405,7 +396,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_bouncedSerial = v.bounced.serial();
         m_brickLayout = v.brickLayout;
         m_cellsSerial = v.bounceIrradiance.serial();
-        m_cells.cellSize = cellSizeOf(frame);
+        m_cells.cellSize = frame.settings.bounceCellVoxels(res);
         m_cells.list.build(
             frame.shaders, v.albedo, VoxelRegion::whole(res / m_cells.cellSize), m_cells.cellSize);
         m_builder.listCells(
@@ -415,7 +406,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_higherCells.cellSize = 0;
     }
     if (split
-        && (m_higherCells.cellSize != higherCellSizeOf(frame)
+        && (m_higherCells.cellSize != frame.settings.higherBounceCellVoxels(res)
             || v.higherBounceIrradiance.serial() != m_higherCellsSerial)) {
         if (v.higherBounceIrradiance.serial() != m_higherCellsSerial) {
             // New textures hold no earlier base: a solve going on from an iterate of a solve that did not
@@ -426,7 +417,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
             glClearTexImage(v.higherBounceBaseBack.id(), 0, GL_RGBA, GL_FLOAT, none);
         }
         m_higherCellsSerial = v.higherBounceIrradiance.serial();
-        m_higherCells.cellSize = higherCellSizeOf(frame);
+        m_higherCells.cellSize = frame.settings.higherBounceCellVoxels(res);
         m_higherCells.list.build(frame.shaders, v.albedo, VoxelRegion::whole(res / m_higherCells.cellSize),
             m_higherCells.cellSize);
         m_higherCells.geometryKnown = false;

@@ -59,10 +59,6 @@ private:
     bool cellsOutdated(const VoxelVolume& voxels) const;
     /** Iterations the current setting asks for: bounces - 1, or kMaxBounces when converging. */
     static int iterationLimit(const FrameContext& frame);
-    /** The bounce cells' side and the higher bounces' (equal: every bounce on the bounce cells), in voxels.
-     */
-    static int cellSizeOf(const FrameContext& frame);
-    static int higherCellSizeOf(const FrameContext& frame);
     /** Whether the solve gathers the bounces after the second on coarser cells (see the class comment). */
     static bool splitsBounces(const FrameContext& frame);
     /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */
@@ -90,7 +86,10 @@ private:
      * @p compare: the current iterate is in `bounced` (else the first-bounce light is).
      */
     void iterate(FrameContext& frame, bool compare, int iteration);
-    /** The same split by splitsBounces(); @p firstOfSolve: this solve's first iteration. */
+    /**
+     * The same split by splitsBounces(); @p firstOfSolve: this solve's first iteration, which gathers the
+     * first-bounce light on both sizes of cells (after the earlier iterate, with @p compare).
+     */
     void iterateSplit(FrameContext& frame, bool compare, bool firstOfSolve, int iteration);
     /** The tail decision (converging only), L = L_direct + albedo * gathered, the filter. */
     void reinject(FrameContext& frame, bool compare, int iteration);

@@ -243,11 +243,20 @@ std::string RenderSettings::setAll(const std::vector<std::pair<std::string, std:
     return {};
 }
 
+int RenderSettings::bounceCellVoxels(int resolution) const
+{
+    return std::min(bounceCellSize, resolution);
+}
+
+int RenderSettings::higherBounceCellVoxels(int resolution) const
+{
+    return std::max(bounceCellVoxels(resolution), std::min(higherBounceCellSize, resolution));
+}
+
 bool RenderSettings::splitsHigherBounces(int resolution) const
 {
-    const int cell = std::min(bounceCellSize, resolution);
     const bool laterIterations = bounces == kConvergedBounces || bounces > 2;
-    return std::max(cell, std::min(higherBounceCellSize, resolution)) > cell && laterIterations;
+    return higherBounceCellVoxels(resolution) > bounceCellVoxels(resolution) && laterIterations;
 }
 
 std::string RenderSettings::validate() const

@@ -67,9 +67,13 @@ struct RenderSettings {
     /// first-bounce light once on the bounce cells and each later iterate's light above it, which has bounced
     /// twice and varies more slowly still, on these (VoxelBouncePass, docs/DESIGN.md "Higher bounces").
     int higherBounceCellSize = 8;
+    /** The bounce cells' side on a grid of @p resolution, and the higher bounces' (both capped at the grid).
+     */
+    int bounceCellVoxels(int resolution) const;
+    int higherBounceCellVoxels(int resolution) const;
     /**
      * Whether a bounce solve on a grid of @p resolution gathers the bounces after the second on coarser
-     * cells: they are coarser there (both sizes capped at the grid) and some iteration follows the first.
+     * cells: they are coarser there and some iteration follows the first.
      */
     bool splitsHigherBounces(int resolution) const;
     /// `bounces=converged` stops when the relative change of the voxels' radiance, and the change still to

@@ -64,14 +64,13 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
     if (bounced) {
         textures.push_back({ "bounced", level0(chain(n, 8, !settings.anisotropicMips)) });
         // The bounce gather's cells: front and back rgba16f, the normal rgba8 snorm.
-        const std::uint64_t cells = std::max<std::uint64_t>(n / std::uint64_t(settings.bounceCellSize), 1);
+        const std::uint64_t cells = n / std::uint64_t(settings.bounceCellVoxels(int(n)));
         textures.push_back({ "bounce cells", chain(cells, 8, false) });
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
         // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): four rgba16f, the normal rgba8
         // snorm.
-        const std::uint64_t higherCells
-            = n / std::min<std::uint64_t>(std::uint64_t(settings.higherBounceCellSize), n);
+        const std::uint64_t higherCells = n / std::uint64_t(settings.higherBounceCellVoxels(int(n)));
         if (settings.splitsHigherBounces(int(n))) {
             textures.push_back({ "higher-bounce cells", chain(higherCells, 8, false) });
             textures.push_back({ "higher-bounce cells, back faces", chain(higherCells, 8, false) });
