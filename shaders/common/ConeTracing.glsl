@@ -191,11 +191,11 @@ void accumulate(vec4 s, float stepLength, float texel, float t, inout vec3 color
     alpha += (1.0 - alpha) * a;
 }
 
-// Where a cone whose sample at uvw (in a grid's [0, 1]^3) lies past the grid's faces takes its last sample:
-// the nearest point half a texel of its lookup inside, so the texels along the face count whole. The steps
-// grow with the cone, and a wall closing the scene at the face lay between the last sample inside and the
-// first outside; ending there without a sample let a closed room's cones out through their walls (a white
-// furnace's gather captured 82%, 96% with this; docs/ACCURACY.md, "Back faces and the grid's faces").
+// Where a cone's last sample lies, at uvw where it leaves the grid (in the grid's [0, 1]^3): the nearest point half a
+// texel of its lookup inside, so the texels along the face count whole. The steps grow with the cone, and a wall
+// closing the scene at the face lay between the last sample inside and the first outside; ending there without a
+// sample let a closed room's cones out through their walls (a white furnace's gather captured 82%, 96% with this;
+// docs/ACCURACY.md, "Back faces and the grid's faces").
 vec3 lastSampleAtFace(vec3 uvw, float texel, float extent)
 {
     float inset = 0.5 * texel / extent;
@@ -204,7 +204,7 @@ vec3 lastSampleAtFace(vec3 uvw, float texel, float extent)
 
 // Where a cone marches: a grid's corner, side and voxel (metres), its top mip level, how far from its faces
 // (in footprints) the cone leaves it, and whether it is the last grid, whose faces end the cone with a sample
-// on them (lastSampleAtFace).
+// on them (lastSampleAtFace) at `exit`, how far along the cone they are.
 struct ConeGrid {
     vec3 origin;
     float extent;
@@ -212,7 +212,23 @@ struct ConeGrid {
     float maxLevel;
     float margin;
     bool last;
+    float exit;
 };
+
+// How far the ray origin + t * dir goes before it leaves the box [corner, corner + extent] (0 if it starts outside).
+float exitDistance(vec3 origin, vec3 dir, vec3 corner, float extent)
+{
+    vec3 safe = mix(vec3(1e-20), dir, greaterThan(abs(dir), vec3(1e-20)));
+    vec3 far = (corner + step(vec3(0.0), dir) * extent - origin) / safe;
+    return max(min(far.x, min(far.y, far.z)), 0.0);
+}
+
+// A cone's footprint at distance t: its diameter, capped at 1 / CLEARANCE of its height above the tangent plane of
+// the surface it leaves (traceCone), never under a voxel.
+float footprint(float t, float tanHalf, float clearCos, float clearOffset, float voxel)
+{
+    return min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, voxel));
+}
 
 // One phase of a cone's march through a grid: steps while the footprint stays in the phase. Returns whether the
 // cone goes on into the next phase; `outside` says it reached past the grid's faces.
@@ -221,7 +237,7 @@ bool marchPhase(int phase, ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3
     inout float occlusion, inout bool outside)
 {
     for (; step < kMaxSteps && t < uMaxDistance && alpha < 0.99; ++step) {
-        float d = min(coneDiameter(t, tanHalf), max((clearOffset + t * clearCos) / CLEARANCE, grid.voxel));
+        float d = footprint(t, tanHalf, clearCos, clearOffset, grid.voxel);
         float level = coneMipLevel(d, grid.voxel, grid.maxLevel);
         if (!inPhase(phase, level))
             return true;
@@ -230,14 +246,28 @@ bool marchPhase(int phase, ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3
         float texel = grid.voxel * exp2(level);
         // Before a lookup reaches past a grid with a coarser one around it, on into that one.
         if (!insideGrid(uvw, grid.margin * d / grid.extent)) {
-            if (grid.last)
-                accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards), lastSampleAtFace(uvw, texel, grid.extent),
-                               level, dir),
-                    stepLength, texel, t, color, alpha, occlusion);
+            // The last grid's face sample is the cone's at the point it leaves the grid, not at the first
+            // sample past it: a gather then varies smoothly with where it starts (docs/ACCURACY.md, "The cone's
+            // last step").
+            if (grid.last) {
+                float faceFootprint = footprint(grid.exit, tanHalf, clearCos, clearOffset, grid.voxel);
+                float faceLevel = coneMipLevel(faceFootprint, grid.voxel, grid.maxLevel);
+                float faceTexel = grid.voxel * exp2(faceLevel);
+                vec3 faceUvw = (origin + grid.exit * dir - grid.origin) / grid.extent;
+                accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards),
+                               lastSampleAtFace(faceUvw, faceTexel, grid.extent), faceLevel, dir),
+                    coneStepLength(faceFootprint, grid.voxel, uStepFactor), faceTexel, grid.exit, color, alpha,
+                    occlusion);
+            }
             outside = true;
             return false;
         }
-        accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards), uvw, level, dir), stepLength, texel, t, color,
+        // In the last grid a step that reaches past the face ends there. Counted whole, the stretch beyond
+        // counted twice (this sample and the face's), and as the cone's start moved, whether a sample fell just
+        // inside or just past the face switched between that double count and none: an edge of a third in the
+        // light gathered across a face of the point-lit Cornell box's short box, which stands askew to the grid.
+        float inside = grid.last ? clamp(grid.exit - t, 0.0, stepLength) : stepLength;
+        accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards), uvw, level, dir), inside, texel, t, color,
             alpha, occlusion);
         t += stepLength;
     }
@@ -285,7 +315,8 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
     const bool onlyGrid = true;
 #endif
     if (firstLevel < 0) {
-        ConeGrid grid = ConeGrid(uGridOrigin, uGridExtent, uVoxelSize, uMaxLevel, onlyGrid ? 0.0 : 1.0, onlyGrid);
+        ConeGrid grid = ConeGrid(uGridOrigin, uGridExtent, uVoxelSize, uMaxLevel, onlyGrid ? 0.0 : 1.0, onlyGrid,
+            exitDistance(origin, dir, uGridOrigin, uGridExtent));
         MARCH_GRID(grid, uRadiance, uTowards)
     }
 #ifdef CLIP_LEVELS
@@ -297,7 +328,8 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
             break;
         outside = false;
         bool coarsest = k + 1 == CLIP_LEVELS;
-        ConeGrid grid = ConeGrid(uClipBox[k].xyz, uClipBox[k].w, uClipGrid[k].x, uClipGrid[k].y, coarsest ? 0.0 : 1.0, coarsest);
+        ConeGrid grid = ConeGrid(uClipBox[k].xyz, uClipBox[k].w, uClipGrid[k].x, uClipGrid[k].y,
+            coarsest ? 0.0 : 1.0, coarsest, exitDistance(origin, dir, uClipBox[k].xyz, uClipBox[k].w));
         MARCH_GRID(grid, uClipRadiance[k], uClipTowards[k])
     }
 #endif

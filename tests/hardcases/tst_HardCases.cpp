@@ -564,19 +564,21 @@ void HardCasesTest::whiteFurnace()
     const float rho = 0.5f, emission = 1.0f;
     render::Scene scene = furnace(rho, emission);
     const float expected = emission + rho * emission;
-    // 1% with anisotropic mips (measured within 0.15% with 60- and 30-degree cones, cached or not), 4% with
-    // box-filtered ones (2.4% low): the room is closed, so the gathers count what the walls let through as
-    // the walls' light (RenderSettings::enclosedSpace). Without that, anisotropic mips read 2.7% low (a cone
-    // leaving at an angle blends the wall it crosses with chains that see it edge-on) and box-filtered ones
-    // 74% low (a one-voxel wall has opacity 2^-k at level k); docs/STABILITY.md. The irradiance cache gathers
-    // the same cones per cell instead of per pixel, so the same bound holds.
+    // 1% with anisotropic mips (measured within 0.15% with 60- and 30-degree cones, cached or not), 5% with
+    // box-filtered ones (4.2% low; 2.4% while a cone's last step past the grid's face counted whole, twice
+    // over with the face's sample: docs/ACCURACY.md, "The cone's last step"): the room is closed, so the
+    // gathers count what the walls let through as the walls' light (RenderSettings::enclosedSpace). Without
+    // that, anisotropic mips read 2.7% low (a cone leaving at an angle blends the wall it crosses with chains
+    // that see it edge-on) and box-filtered ones 74% low (a one-voxel wall has opacity 2^-k at level k);
+    // docs/STABILITY.md. The irradiance cache gathers the same cones per cell instead of per pixel, so the
+    // same bound holds.
     struct Case {
         bool anisotropic;
         float apertureDeg;
         bool irradianceCache;
         float tolerance; // relative; 0 = only "never less than the emission itself"
     };
-    for (const Case c : { Case { false, 60.0f, false, 0.04f }, Case { true, 60.0f, false, 0.01f },
+    for (const Case c : { Case { false, 60.0f, false, 0.05f }, Case { true, 60.0f, false, 0.01f },
              Case { true, 30.0f, false, 0.01f }, Case { true, 30.0f, true, 0.01f } }) {
         render::RenderSettings settings;
         settings.voxelResolution = 64;
