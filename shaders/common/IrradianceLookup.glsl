@@ -35,7 +35,8 @@ bool lookUpCells(sampler3D front, sampler3D back, sampler3D normals, sampler3D m
             continue;
         float agreement = dot(cellNormal.xyz, n);
         bool backSide = cellNormal.w > 0.75 && agreement < 0.0;
-        agreement = abs(agreement);
+        if (backSide)
+            agreement = -agreement;
         if (agreement < 0.5)
             continue;
         vec4 cached = backSide ? texelFetch(back, c, 0) : texelFetch(front, c, 0);

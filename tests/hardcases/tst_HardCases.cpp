@@ -19,10 +19,12 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 /// The dark room may show at most this share of the lit room's radiance (docs/STABILITY.md).
 constexpr double kThinWallLeakBound = 0.03;
-constexpr double kThinWallLeakBoundCached = 0.06;
+constexpr double kThinWallLeakBoundCached = 0.035;
 /// With every bounce, what leaks into the dark room bounces around in it too (docs/STABILITY.md): the more
 /// its gathers capture, the more (both rooms are closed, so they capture all: RenderSettings::enclosedSpace).
-constexpr double kThinWallLeakBoundConverged = 0.24;
+constexpr double kThinWallLeakBoundConverged = 0.13;
+/// Walls a few voxels thick, every bounce, the cache (docs/STABILITY.md).
+constexpr double kThickWallLeakBound = 0.12;
 
 /** A closed room [-1,1]^3 seen from inside, a box on its floor, one point light: scaled by `scale`, moved by
  * `offset`. */
@@ -136,6 +138,7 @@ private slots:
     void smallChangesGiveSmallDifferences();
     void finerGridsConverge();
     void thinWallLeak();
+    void wallsAFewVoxelsThickKeepTheirSides();
     void enclosedSpaceChangesOnlyClosedRooms();
     void nearlyWhiteClosedRoomSaysItStoppedShort();
     void higherBouncesOnCoarserCellsKeepTheImage_data();
@@ -145,6 +148,7 @@ private:
     render::RadianceImage render(
         const render::Scene& scene, const render::RenderSettings& settings, int size = 32);
     void expectSane(const render::RadianceImage& image, float bound);
+    double wallLeak(render::Scene scene, const render::RenderSettings& settings, double* litMean);
     test::GlTestContext m_gl;
 };
 
@@ -841,10 +845,11 @@ void HardCasesTest::finerGridsConverge()
     QVERIFY2(middle < coarse, qPrintable(QString("%1 >= %2").arg(middle).arg(coarse)));
 }
 
-// Two rooms side by side, split by a wall a tenth of a voxel thick, a light in the left one. Direct light
-// cannot pass (shadow maps); indirect light leaks through the voxel the wall shares with both rooms. The
-// leak is the dark room's mean radiance over the lit room's, as each camera sees its own room.
-void HardCasesTest::thinWallLeak()
+namespace {
+
+// Two 2x2x2 rooms side by side, split by a wall 2 * halfThickness thick (two quads back to back), a light in
+// the left one.
+render::Scene twoRooms(float halfThickness)
 {
     render::Scene scene;
     render::Material white;
@@ -858,39 +863,77 @@ void HardCasesTest::thinWallLeak()
     add(test::quad({ 2, -1, 1 }, { -2, -1, 1 }, { -2, 1, 1 }, { 2, 1, 1 })); // front
     add(test::quad({ -2, -1, 1 }, { -2, -1, -1 }, { -2, 1, -1 }, { -2, 1, 1 })); // left end
     add(test::quad({ 2, -1, -1 }, { 2, -1, 1 }, { 2, 1, 1 }, { 2, 1, -1 })); // right end
-    const float t = 0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f; // half a tenth of a voxel
+    const float t = halfThickness;
     add(test::quad(
         { -t, -1, -1 }, { -t, -1, 1 }, { -t, 1, 1 }, { -t, 1, -1 })); // divider, facing the lit room
     add(test::quad({ t, -1, 1 }, { t, -1, -1 }, { t, 1, -1 }, { t, 1, 1 })); // divider, facing the dark room
     scene.meshes.push_back(test::makeTriangles(walls, 0));
     scene.pointLights.push_back({ { -1.0f, 0.5f, 0.0f }, glm::vec3(2.0f), true });
+    return scene;
+}
+
+} // namespace
+
+// The dark room's mean radiance over the lit room's, as each camera sees its own room.
+double HardCasesTest::wallLeak(render::Scene scene, const render::RenderSettings& settings, double* litMean)
+{
+    scene.camera = { { -1.0f, 0.0f, 0.9f }, { -1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
+    const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+    expectSane(m_gl.renderer->readFrame(), 10.0f);
+    scene.camera = { { 1.0f, 0.0f, 0.9f }, { 1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
+    const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
+    expectSane(m_gl.renderer->readFrame(), 10.0f);
+    if (litMean)
+        *litMean = lit;
+    return lit > 0.0 ? dark / lit : 0.0;
+}
+
+// A wall a tenth of a voxel thick. Direct light cannot pass (shadow maps); indirect light leaks through the
+// voxel the wall shares with both rooms.
+void HardCasesTest::thinWallLeak()
+{
+    const render::Scene scene = twoRooms(0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f); // a tenth of a voxel
     // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
-    // faces' normals cancel) and gather each side from that side. It leaks more than per-pixel cones
-    // (measured 4.8% against 2.1%): a floor cell under the wall belongs to both rooms and gathers from one
-    // point above the wall's voxels, where pixel cones start on their own side; hence its own bound
-    // (docs/STABILITY.md).
+    // faces' normals cancel) and gather each side from that side. It leaks a little more than per-pixel cones
+    // (measured 2.4% against 2.0%; 5.0% while lookups took cells facing away from the pixel for its own, see
+    // wallsAFewVoxelsThickKeepTheirSides): a floor cell under the wall belongs to both rooms and gathers from
+    // one point above the wall's voxels, where pixel cones start on their own side; hence its own bound
+    // (docs/STABILITY.md). Every bounce: 8.7% and 9.0% (16.9% and 20.9% before).
     for (const int bounces : { 1, render::RenderSettings::kConvergedBounces })
         for (const bool irradianceCache : { false, true }) {
             render::RenderSettings settings;
             settings.voxelResolution = 32;
             settings.bounces = bounces;
             settings.irradianceCache = irradianceCache;
-            scene.camera = { { -1.0f, 0.0f, 0.9f }, { -1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
-            const double lit = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-            expectSane(m_gl.renderer->readFrame(), 10.0f);
-            scene.camera = { { 1.0f, 0.0f, 0.9f }, { 1.0f, -0.3f, -1.0f }, { 0, 1, 0 }, 70.0f, 0.01f };
-            const double dark = io::ImageMetrics::meanLuminance(render(scene, settings, 48));
-            expectSane(m_gl.renderer->readFrame(), 10.0f);
-            const double leak = dark / lit;
-            qInfo("thin wall%s, %s: lit room %.4f, dark room %.4f, leak %.2f%%",
-                irradianceCache ? ", irradiance cache" : "",
-                bounces == 1 ? "one bounce" : "converged bounces", lit, dark, 100.0 * leak);
+            double lit = 0.0;
+            const double leak = wallLeak(scene, settings, &lit);
+            qInfo("thin wall%s, %s: lit room %.4f, leak %.2f%%", irradianceCache ? ", irradiance cache" : "",
+                bounces == 1 ? "one bounce" : "converged bounces", lit, 100.0 * leak);
             QVERIFY(lit > 0.0);
             const double bound = bounces == 1
                 ? (irradianceCache ? kThinWallLeakBoundCached : kThinWallLeakBound)
                 : kThinWallLeakBoundConverged;
             QVERIFY2(leak < bound, qPrintable(QString::number(leak)));
         }
+}
+
+// Walls one and a half and two and a half voxels thick: each face has cells of its own, one-sided, facing its
+// own room. A lookup (the pixels' and the bounce iteration's) must not take a cell facing away from the
+// surface it lights: it took its far side's light for its own, and these walls leaked 17.4% and 11.5% with
+// every bounce and the cache (measured 8.1% and 6.8% since; docs/STABILITY.md).
+void HardCasesTest::wallsAFewVoxelsThickKeepTheirSides()
+{
+    const float voxel = 4.0f * 32.0f / 30.0f / 32.0f;
+    for (const float voxels : { 1.5f, 2.5f }) {
+        render::RenderSettings settings;
+        settings.voxelResolution = 32;
+        double lit = 0.0;
+        const double leak = wallLeak(twoRooms(0.5f * voxels * voxel), settings, &lit);
+        qInfo("wall %.1f voxels thick, the defaults: lit room %.4f, leak %.2f%%", double(voxels), lit,
+            100.0 * leak);
+        QVERIFY(lit > 0.0);
+        QVERIFY2(leak < kThickWallLeakBound, qPrintable(QString::number(leak)));
+    }
 }
 
 // A gather that starts where no light can leave counts what the voxels let through as the walls' light
