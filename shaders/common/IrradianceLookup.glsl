@@ -3,7 +3,8 @@
 // Needs uGridOrigin (metres) declared before it.
 #include "common/Bindings.glsl"
 layout(binding = IRRADIANCE_UNIT) uniform sampler3D uIrradiance;
-// rgba8 snorm: xyz the cell normal, w = 0 no surface, 0.5 one-sided, 1 two-sided (half the sides, to fit snorm).
+// rgba8 snorm: xyz the cell normal (a one-sided cell's is the mean of its voxels', shorter than one where they
+// disagree), w = 0 no surface, 0.5 one-sided, 1 two-sided (half the sides, to fit snorm).
 layout(binding = CELL_NORMAL_UNIT) uniform sampler3D uCellNormal;
 layout(binding = IRRADIANCE_BACK_UNIT) uniform sampler3D uIrradianceBack;
 uniform int uCells;         // cache cells per side
@@ -11,7 +12,7 @@ uniform float uCellSize;    // metres
 #include "common/IrradianceCells.glsl"
 
 // Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does
-// (within 60 degrees, weighted by cos^4), so light from the far side of a wall or a corner's other face does
+// (a mean cosine of at least one half, weighted by its fourth power), so light from the far side of a wall or a corner's other face does
 // not bleed in; a two-sided cell offers whichever of its sides faces the pixel. The small floor on the trilinear weight lets a lone
 // matching cell count. False when no cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
 // Over any cells laid out as the cache's (`cells` per side, cellSize metres each); with `subtract`, of what

@@ -45,7 +45,8 @@ layout(rgba16f, binding = 5) uniform image3D uIterateBack;
 #endif
 layout(rgba16f, binding = 0) GATHER_ACCESS uniform image3D uIrradiance;     // along the cell normal
 layout(rgba16f, binding = 1) GATHER_ACCESS uniform image3D uIrradianceBack; // against it, two-sided cells only
-// xyz: the cell's unit normal; w: 0 = no surface, 1 = one-sided, 2 = two-sided (uIrradianceBack is valid)
+// xyz: the mean of the cell's voxel normals (a two-sided cell's: the axis it gathers along); w: 0 = no surface,
+// 1 = one-sided, 2 = two-sided (uIrradianceBack is valid)
 layout(rgba8_snorm, binding = 2) writeonly uniform image3D uCellNormal; // w = sides / 2 (common/IrradianceLookup.glsl)
 #ifdef CACHED_GEOMETRY
 // The bounce iteration gathers the same cells again and again from the same voxels: after the first gather the
@@ -161,10 +162,16 @@ void gatherCell(ivec3 cell)
             }
         }
     }
-    imageStore(uCellNormal, cell, vec4(n, twoSided ? 1.0 : 0.5));
+    // A one-sided cell stores the mean of its voxels' normals, not its direction alone: a lookup's cosine with it
+    // is then the mean cosine of the cell's surface with the pixel's, and a cell on an edge, holding two faces,
+    // counts as the half of it that faces the pixel's way. With unit normals such a cell, its normal between
+    // the faces, passed for either face and lit a row of blobs along a box's edge with the light it gathered
+    // along that in-between direction (docs/ACCURACY.md, "Lookups keep to their side").
+    vec3 stored = twoSided ? n : n * min(normalLength / occupied, 1.0);
+    imageStore(uCellNormal, cell, vec4(stored, twoSided ? 1.0 : 0.5));
     // Gather along the normal as stored (8-bit snorm), as later gathers that read it back will: a solve must
     // not depend on which of its gathers came first.
-    n = normalize(round(clamp(n, -1.0, 1.0) * 127.0) / 127.0);
+    n = normalize(round(clamp(stored, -1.0, 1.0) * 127.0) / 127.0);
 #endif
     if (!twoSided) // (a two-sided cell's back face is read first for its change: CHANGE_SUMS)
         imageStore(uIrradianceBack, cell, kNone);
