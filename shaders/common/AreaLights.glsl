@@ -61,18 +61,36 @@ int clipTriangle(vec3 a, vec3 b, vec3 c, vec3 n, out vec3 q[4])
     return count;
 }
 
-// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
-// receiver, above the plane with normal n; the triangle is clipped to that plane first.
-float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
+// theta * unit(a x b) for unit a, b: an edge's part of a polygon's vector irradiance.
+vec3 edgeVector(vec3 a, vec3 b)
+{
+    vec3 c = cross(a, b);
+    float s = length(c);
+    float theta = atan(s, dot(a, b));
+    return s > 1e-12 ? theta * c / s : vec3(0.0);
+}
+
+// Triangle (a, b, c)'s vector irradiance over its radiance at the receiver, after clipping it to the plane
+// with normal n: its component along n is the cosine-weighted solid angle (pi times the form factor), and its
+// direction the mean direction the light arrives from.
+vec3 clippedTriangleVector(vec3 a, vec3 b, vec3 c, vec3 n)
 {
     vec3 q[4];
     int count = clipTriangle(a, b, c, n, q);
     if (count < 3)
-        return 0.0;
-    float sum = 0.0;
+        return vec3(0.0);
+    vec3 sum = vec3(0.0);
     for (int i = 0; i < count; ++i)
-        sum += edgeTerm(normalize(q[i]), normalize(q[(i + 1) % count]), n);
-    return 0.5 * abs(sum);
+        sum += edgeVector(normalize(q[i]), normalize(q[(i + 1) % count]));
+    sum *= 0.5;
+    return dot(sum, n) < 0.0 ? -sum : sum;
+}
+
+// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
+// receiver, above the plane with normal n; the triangle is clipped to that plane first.
+float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
+{
+    return dot(clippedTriangleVector(a, b, c, n), n);
 }
 
 // Steps a shadow cone (see coneTransmittance) through one grid's opacity `opacity` (corner and side in box,
@@ -143,11 +161,12 @@ float coneTransmittance(vec3 p, vec3 dir, float tanHalf, vec3 n, float offset, v
     return clamp(1.0 - alpha, 0.0, 1.0);
 }
 
-// 1 where nothing lies between p and light i, 0 behind opaque voxels, soft in between (Crassin et al. 2011's
-// soft shadows). The light, taken as a disk of its area, is covered by four cones of half its angular radius
-// around its centre: one cone as wide as the light would have to narrow to keep clear of the receiver
-// (coneTransmittance) exactly where an occluder halfway decides the penumbra.
-float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
+// 1 where nothing lies between p (normal n) and light i, whose vector irradiance at p is `towards`, 0 behind
+// opaque voxels, soft in between (Crassin et al. 2011's soft shadows). The light, taken as a disk of its area,
+// is covered by four cones of half its angular radius around its centre: one cone as wide as the light would
+// have to narrow to keep clear of the receiver (coneTransmittance) exactly where an occluder halfway decides
+// the penumbra.
+float areaLightVisibility(vec3 p, vec3 n, float offset, int i, vec3 towards)
 {
     vec4 sphere = texelFetch(uAreaLights, 4 * i + 1);
     vec4 areaCount = texelFetch(uAreaLights, 4 * i + 2);
@@ -159,8 +178,17 @@ float areaLightVisibility(vec3 p, vec3 n, float offset, int i)
     float distance = length(d);
     if (distance <= 1e-30)
         return 1.0;
-    vec3 dir = d / distance;
-    float tanHalf = min(sqrt(areaCount.x / kAreaPi) / distance, kMaxVisibilityTan);
+    // Toward the light's centre while all of it lies above the receiver's horizon; as it dips below, toward
+    // where the light the receiver sees comes from (`towards`, its vector irradiance), fully so once the centre
+    // is below. Aimed at a centre on the horizon, the cones left the surface almost along it and met its own
+    // voxels, which stand out of an askew surface's plane: a wall beside a ceiling light read half its light
+    // (tst_AreaLights::lightOnAWallsHorizonIsNotSelfShadowed).
+    vec3 centre = d / distance;
+    float radiusTan = sqrt(areaCount.x / kAreaPi) / distance;
+    float sinRadius = radiusTan * inversesqrt(1.0 + radiusTan * radiusTan);
+    float above = clamp(dot(centre, n) / max(sinRadius, 1e-4), 0.0, 1.0);
+    vec3 dir = dot(towards, towards) > 1e-30 ? normalize(mix(normalize(towards), centre, above)) : centre;
+    float tanHalf = min(radiusTan, kMaxVisibilityTan);
     vec3 u = normalize(abs(dir.x) < 0.9 ? cross(dir, vec3(1.0, 0.0, 0.0)) : cross(dir, vec3(0.0, 1.0, 0.0)));
     vec3 v = cross(dir, u);
 #ifdef ONE_SHADOW_CONE
@@ -189,18 +217,24 @@ bool emittingTriangle(int base, vec3 p, out vec3 a, out vec3 b, out vec3 c)
     return dot(cross(b - a, c - a), -a) > 0.0;
 }
 
-// Light i's cosine-weighted solid angle at p above the plane of normal n: its irradiance over its radiance.
-float areaLightFactor(int i, vec3 p, vec3 n)
+// Light i's vector irradiance over its radiance at p above the plane of normal n (clippedTriangleVector): along n
+// its irradiance over its radiance.
+vec3 areaLightVector(int i, vec3 p, vec3 n)
 {
     int first = int(texelFetch(uAreaLights, 4 * i).w + 0.5);
     int count = int(texelFetch(uAreaLights, 4 * i + 2).y + 0.5);
-    float factor = 0.0;
+    vec3 sum = vec3(0.0);
     for (int k = 0; k < count; ++k) {
         vec3 a, b, c;
         if (emittingTriangle(first + 3 * k, p, a, b, c))
-            factor += clippedTriangleIrradianceFactor(a, b, c, n);
+            sum += clippedTriangleVector(a, b, c, n);
     }
-    return factor;
+    return sum;
+}
+
+float areaLightFactor(int i, vec3 p, vec3 n)
+{
+    return dot(areaLightVector(i, p, n), n);
 }
 
 // Irradiance (W/m^2) at p on a surface with normal n from every area light, without shadows.
@@ -240,12 +274,13 @@ void areaLightIrradiance(vec3 p, vec3 n, float offset, out vec3 unshadowed, out 
     unshadowed = vec3(0.0);
     shadowed = vec3(0.0);
     for (int i = 0; i < kAreaLightCount; ++i) {
-        float factor = areaLightFactor(i, p, n);
+        vec3 towards = areaLightVector(i, p, n);
+        float factor = dot(towards, n);
         if (factor <= 0.0)
             continue;
         vec3 light = texelFetch(uAreaLights, 4 * i).rgb * factor;
         unshadowed += light;
-        shadowed += light * areaLightVisibility(p + n * offset, n, offset, i);
+        shadowed += light * areaLightVisibility(p + n * offset, n, offset, i, towards);
     }
 }
 
