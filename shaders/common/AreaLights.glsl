@@ -33,15 +33,6 @@ const float kAreaPi = 3.14159265358979;
 // sampling the receiver's own surface around it.
 const float kMaxVisibilityTan = 0.58; // 30 degrees half-angle
 
-// Sum over the polygon's edges of theta_i * (n . unit(v_i x v_{i+1})): 2 pi times its projected solid angle.
-float edgeTerm(vec3 a, vec3 b, vec3 n)
-{
-    vec3 c = cross(a, b);
-    float s = length(c);
-    float theta = atan(s, dot(a, b));
-    return s > 1e-12 ? theta * dot(c, n) / s : 0.0;
-}
-
 // The part of triangle (a, b, c) on the side of the plane through the origin that normal n points to, into q
 // (at most four corners); its corner count, below 3 when nothing is left.
 int clipTriangle(vec3 a, vec3 b, vec3 c, vec3 n, out vec3 q[4])
@@ -84,13 +75,6 @@ vec3 clippedTriangleVector(vec3 a, vec3 b, vec3 c, vec3 n)
         sum += edgeVector(normalize(q[i]), normalize(q[(i + 1) % count]));
     sum *= 0.5;
     return dot(sum, n) < 0.0 ? -sum : sum;
-}
-
-// The cosine-weighted solid angle (pi times the form factor) of triangle (a, b, c), given relative to the
-// receiver, above the plane with normal n; the triangle is clipped to that plane first.
-float clippedTriangleIrradianceFactor(vec3 a, vec3 b, vec3 c, vec3 n)
-{
-    return dot(clippedTriangleVector(a, b, c, n), n);
 }
 
 // Steps a shadow cone (see coneTransmittance) through one grid's opacity `opacity` (corner and side in box,

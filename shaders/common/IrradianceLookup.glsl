@@ -11,10 +11,11 @@ uniform int uCells;         // cache cells per side
 uniform float uCellSize;    // metres
 #include "common/IrradianceCells.glsl"
 
-// Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does
-// (a mean cosine of at least one half, weighted by its fourth power), so light from the far side of a wall or a corner's other face does
-// not bleed in; a two-sided cell offers whichever of its sides faces the pixel. The small floor on the trilinear weight lets a lone
-// matching cell count. False when no cell nearby carries this surface (thin two-sided walls, sub-voxel details): the caller traces instead.
+// Trilinear over the eight cells around p, keeping only cells whose surface faces the way this pixel does (a
+// mean cosine of at least one half, weighted by its fourth power), so light from the far side of a wall or a
+// corner's other face does not bleed in; a two-sided cell offers whichever of its sides faces the pixel. The
+// small floor on the trilinear weight lets a lone matching cell count. False when no cell nearby carries this
+// surface (thin two-sided walls, sub-voxel details): the caller traces instead.
 // Over any cells laid out as the cache's (`cells` per side, cellSize metres each); with `subtract`, of what
 // front and back hold less what minusFront and minusBack do, with the same weights (the bounce iteration's
 // higher bounces, bounce/ReinjectBounce.comp).
