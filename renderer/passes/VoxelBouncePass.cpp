@@ -21,10 +21,9 @@ VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
     const RenderSettings& s = frame.settings;
     // The cones' key holds a clipmap's coarser levels' light: a level solved against a coarser level's light
     // still converging (an interactive view after a light edit) goes on when that light changes.
-    return { ConeTraceKey::of(frame), s.bounces,
-        frame.settings.bounceCellVoxels(frame.voxels.frame.resolution),
-        frame.settings.higherBounceCellVoxels(frame.voxels.frame.resolution), s.bounceTolerance,
-        frame.voxels.materialsVersion };
+    const int res = frame.voxels.frame.resolution;
+    return { ConeTraceKey::of(frame), s.bounces, s.bounceCellVoxels(res), s.higherBounceCellVoxels(res),
+        s.bounceTolerance, frame.voxels.materialsVersion };
 }
 
 bool VoxelBouncePass::splitsBounces(const FrameContext& frame)

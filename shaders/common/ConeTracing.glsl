@@ -329,7 +329,7 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
         outside = false;
         bool coarsest = k + 1 == CLIP_LEVELS;
         ConeGrid grid = ConeGrid(uClipBox[k].xyz, uClipBox[k].w, uClipGrid[k].x, uClipGrid[k].y,
-            coarsest ? 0.0 : 1.0, coarsest, exitDistance(origin, dir, uClipBox[k].xyz, uClipBox[k].w));
+            coarsest ? 0.0 : 1.0, coarsest, coarsest ? exitDistance(origin, dir, uClipBox[k].xyz, uClipBox[k].w) : 0.0);
         MARCH_GRID(grid, uClipRadiance[k], uClipTowards[k])
     }
 #endif

@@ -847,6 +847,10 @@ void HardCasesTest::finerGridsConverge()
 
 namespace {
 
+// The voxel of twoRooms() on the 32^3 grid its tests use: the grid spans the 4 m scene and a voxel beyond
+// each side (core/VoxelGridFrame).
+constexpr float kTwoRoomsVoxel = 4.0f * 32.0f / 30.0f / 32.0f;
+
 // Two 2x2x2 rooms side by side, split by a wall 2 * halfThickness thick (two quads back to back), a light in
 // the left one.
 render::Scene twoRooms(float halfThickness)
@@ -892,7 +896,7 @@ double HardCasesTest::wallLeak(render::Scene scene, const render::RenderSettings
 // voxel the wall shares with both rooms.
 void HardCasesTest::thinWallLeak()
 {
-    const render::Scene scene = twoRooms(0.1f * (4.0f * 32.0f / 30.0f) / 32.0f * 0.5f); // a tenth of a voxel
+    const render::Scene scene = twoRooms(0.5f * 0.1f * kTwoRoomsVoxel); // a tenth of a voxel
     // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
     // faces' normals cancel) and gather each side from that side. It leaks a little more than per-pixel cones
     // (measured 2.5% against 2.0%; 5.0% while lookups took cells facing away from the pixel for its own, see
@@ -923,12 +927,11 @@ void HardCasesTest::thinWallLeak()
 // every bounce and the cache (measured 7.4% and 6.4% since; docs/STABILITY.md).
 void HardCasesTest::wallsAFewVoxelsThickKeepTheirSides()
 {
-    const float voxel = 4.0f * 32.0f / 30.0f / 32.0f;
     for (const float voxels : { 1.5f, 2.5f }) {
         render::RenderSettings settings;
         settings.voxelResolution = 32;
         double lit = 0.0;
-        const double leak = wallLeak(twoRooms(0.5f * voxels * voxel), settings, &lit);
+        const double leak = wallLeak(twoRooms(0.5f * voxels * kTwoRoomsVoxel), settings, &lit);
         qInfo("wall %.1f voxels thick, the defaults: lit room %.4f, leak %.2f%%", double(voxels), lit,
             100.0 * leak);
         QVERIFY(lit > 0.0);
