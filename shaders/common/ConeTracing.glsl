@@ -59,6 +59,21 @@ const int kMaxSteps = 256;
 // A grid's volume (`radiance`, and with anisotropic mips the chains `towards` above its level 0) as a cone
 // travelling along dir sees it at a (fractional) mip level. SAMPLE_GRID drops `towards` where there are no
 // chains.
+#ifdef ANISOTROPIC
+// The three chains facing a cone, weighted by the squared components of its direction. Their transmittances
+// multiply, each raised to its weight, so a wall the chain crossing it holds opaque stays opaque to an oblique
+// cone: the weighted mean of the opacities let a cone at 45 degrees through half of a wall the other chains see
+// edge-on, and every gather lost light through the walls around it, more with every bounce (docs/ACCURACY.md,
+// "Oblique cones through walls"). The light keeps the weighted mean's colour at the new opacity.
+vec4 blendChains(vec4 a, vec4 b, vec4 c, vec3 w)
+{
+    vec4 linear = w.x * a + w.y * b + w.z * c;
+    vec3 t = max(vec3(1.0) - vec3(a.a, b.a, c.a), vec3(1e-4));
+    float alpha = 1.0 - exp2(dot(w, log2(t)));
+    return linear.a > 1e-6 ? vec4(linear.rgb * (alpha / linear.a), alpha) : linear;
+}
+#endif
+
 #ifndef ANISOTROPIC
 vec4 sampleGrid(sampler3D radiance, vec3 uvw, float level)
 {
@@ -77,9 +92,8 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
     vec4 finest = sampleLevel0(radiance, uvw);
     vec3 w = dir * dir; // sums to one for a unit direction
     float l = max(level - 1.0, 0.0);
-    vec4 directional = w.x * sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l)
-        + w.y * sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l)
-        + w.z * sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l);
+    vec4 directional = blendChains(sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l),
+        sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l), sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l), w);
     return mix(finest, directional, clamp(level, 0.0, 1.0));
 }
 #define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, towards, uvw, level, dir)
@@ -113,9 +127,9 @@ vec4 samplePhase(int phase, sampler3D radiance TOWARDS_PARAM, vec3 uvw, float le
         COUNT_FETCHES(3);
         vec3 w = dir * dir;
         float l = max(level - 1.0, 0.0);
-        return w.x * sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l)
-            + w.y * sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l)
-            + w.z * sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l);
+        return blendChains(sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l),
+            sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l), sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l),
+            w);
     }
 #endif
     return SAMPLE_GRID(radiance, towards, uvw, level, dir);
