@@ -260,19 +260,6 @@ bool marchPhase(int phase, ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3
         float texel = grid.voxel * exp2(level);
         // Before a lookup reaches past a grid with a coarser one around it, on into that one.
         if (!insideGrid(uvw, grid.margin * d / grid.extent)) {
-            // The last grid's face sample is the cone's at the point it leaves the grid, not at the first
-            // sample past it: a gather then varies smoothly with where it starts (docs/ACCURACY.md, "The cone's
-            // last step").
-            if (grid.last) {
-                float faceFootprint = footprint(grid.exit, tanHalf, clearCos, clearOffset, grid.voxel);
-                float faceLevel = coneMipLevel(faceFootprint, grid.voxel, grid.maxLevel);
-                float faceTexel = grid.voxel * exp2(faceLevel);
-                vec3 faceUvw = (origin + grid.exit * dir - grid.origin) / grid.extent;
-                accumulate(samplePhase(phase, radiance TOWARDS_ARG(towards),
-                               lastSampleAtFace(faceUvw, faceTexel, grid.extent), faceLevel, dir),
-                    coneStepLength(faceFootprint, grid.voxel, uStepFactor), faceTexel, grid.exit, color, alpha,
-                    occlusion);
-            }
             outside = true;
             return false;
         }
@@ -286,6 +273,24 @@ bool marchPhase(int phase, ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3
         t += stepLength;
     }
     return false;
+}
+
+// The last grid's face sample, once a cone has left it: the cone's at the point it leaves the grid, not at the
+// first sample past it, so a gather varies smoothly with where it starts (docs/ACCURACY.md, "The cone's last
+// step"). Taken after the grid's march loops, not in them: llvmpipe runs a branch's lookups for all the lanes
+// of a loop iteration whenever one of them takes it, and lanes leave the grid at different steps, so inside the
+// loops the face's lookups cost about as much as the march's own (docs/BENCHMARKS.md, "The face sample out of
+// the march's loops"). In a clipmap it stays in the loop over levels, once per level: after that loop, the
+// coarsest level's lookup read NaN on llvmpipe (Mesa 22.3; tst_Clipmap).
+void sampleAtFace(ConeGrid grid, sampler3D radiance TOWARDS_PARAM, vec3 origin, vec3 dir, float tanHalf,
+    float clearCos, float clearOffset, inout vec3 color, inout float alpha, inout float occlusion)
+{
+    float faceFootprint = footprint(grid.exit, tanHalf, clearCos, clearOffset, grid.voxel);
+    float faceLevel = coneMipLevel(faceFootprint, grid.voxel, grid.maxLevel);
+    float faceTexel = grid.voxel * exp2(faceLevel);
+    vec3 faceUvw = (origin + grid.exit * dir - grid.origin) / grid.extent;
+    accumulate(SAMPLE_GRID(radiance, towards, lastSampleAtFace(faceUvw, faceTexel, grid.extent), faceLevel, dir),
+        coneStepLength(faceFootprint, grid.voxel, uStepFactor), faceTexel, grid.exit, color, alpha, occlusion);
 }
 
 // A cone's march through one grid from t on: phase after phase in a single grid; in a clipmap one loop per
@@ -332,6 +337,11 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
         ConeGrid grid = ConeGrid(uGridOrigin, uGridExtent, uVoxelSize, uMaxLevel, onlyGrid ? 0.0 : 1.0, onlyGrid,
             exitDistance(origin, dir, uGridOrigin, uGridExtent));
         MARCH_GRID(grid, uRadiance, uTowards)
+#ifndef CLIP_LEVELS
+        if (outside && alpha < 0.99)
+            sampleAtFace(grid, uRadiance TOWARDS_ARG(uTowards), origin, dir, tanHalf, clearCos, clearOffset, color,
+                alpha, occlusion);
+#endif
     }
 #ifdef CLIP_LEVELS
     // The same in each coarser level the cone reaches, the same t going on; the coarsest ends at its faces.
@@ -345,6 +355,9 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, float clearCos, float clear
         ConeGrid grid = ConeGrid(uClipBox[k].xyz, uClipBox[k].w, uClipGrid[k].x, uClipGrid[k].y,
             coarsest ? 0.0 : 1.0, coarsest, coarsest ? exitDistance(origin, dir, uClipBox[k].xyz, uClipBox[k].w) : 0.0);
         MARCH_GRID(grid, uClipRadiance[k], uClipTowards[k])
+        if (coarsest && outside && alpha < 0.99)
+            sampleAtFace(grid, uClipRadiance[k] TOWARDS_ARG(uClipTowards[k]), origin, dir, tanHalf, clearCos,
+                clearOffset, color, alpha, occlusion);
     }
 #endif
     return vec4(color, alpha);
