@@ -183,27 +183,40 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     }
     ConeTracingSetup::addDefines(defines, frame);
     const gl::Program& program = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
-    ConeTracingSetup::applyCellGather(
-        program, frame, anisotropic, grid.cellSize, false, front, back, normals);
-    if (grid.geometryKnown)
-        normals.bindUnit(2);
-    if (fromFirstBounce && anisotropic) // its level 0 (startFromFirstBounce)
-        v.radiance.bindUnit(5);
-    if (sums) {
-        front.bindImage(0, 0, GL_READ_WRITE);
-        back.bindImage(1, 0, GL_READ_WRITE);
-        m_sums.bindImage(3, 0, GL_READ_WRITE);
-        program.set("uIteration", sumsIteration);
-        program.set("uFirstGather", firstGather ? 1 : 0);
-    }
-    if (shiftIterate) {
-        front.bindImage(0, 0, GL_READ_WRITE);
-        back.bindImage(1, 0, GL_READ_WRITE);
-        v.higherBounceIrradiance.bindImage(4, 0, GL_READ_WRITE);
-        v.higherBounceIrradianceBack.bindImage(5, 0, GL_READ_WRITE);
-    }
-    program.use();
+    const gl::Program& backSides = frame.shaders.program({ name + ", back sides",
+        { "irradiance/GatherCells.comp" }, BackSideCells::backSideDefines(defines) });
+    // Both dispatches read and write the same: the first every cell's front (its only side if one-sided), the
+    // second the back sides of the two-sided cells the first listed.
+    const auto setUp = [&](const gl::Program& gather, bool geometryKnown) {
+        ConeTracingSetup::applyCellGather(
+            gather, frame, anisotropic, grid.cellSize, false, front, back, normals);
+        if (geometryKnown)
+            normals.bindUnit(2);
+        if (fromFirstBounce && anisotropic) // its level 0 (startFromFirstBounce)
+            v.radiance.bindUnit(5);
+        if (sums) {
+            front.bindImage(0, 0, GL_READ_WRITE);
+            back.bindImage(1, 0, GL_READ_WRITE);
+            m_sums.bindImage(3, 0, GL_READ_WRITE);
+            gather.set("uIteration", sumsIteration);
+            gather.set("uFirstGather", firstGather ? 1 : 0);
+        }
+        if (shiftIterate) {
+            front.bindImage(0, 0, GL_READ_WRITE);
+            back.bindImage(1, 0, GL_READ_WRITE);
+            v.higherBounceIrradiance.bindImage(4, 0, GL_READ_WRITE);
+            v.higherBounceIrradianceBack.bindImage(5, 0, GL_READ_WRITE);
+        }
+        gather.use();
+    };
+    const std::size_t cells = std::size_t(v.frame.resolution / grid.cellSize);
+    setUp(program, grid.geometryKnown);
+    m_backSides.bindForGather(program, cells * cells * cells);
     grid.list.dispatchOverCells();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT
+        | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    setUp(backSides, true);
+    m_backSides.dispatch();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     grid.geometryKnown = true;
 }

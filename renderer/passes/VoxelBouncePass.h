@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/BackSideCells.h"
 #include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
@@ -113,6 +114,7 @@ private:
     CellGrid m_higherCells; ///< the higher bounces' cells when the solve splits them off
     VoxelMipBuilder m_builder;
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
+    BackSideCells m_backSides; ///< the two-sided cells of the gather running, whose back sides go apart
     std::uint64_t m_brickLayout = 0; ///< VoxelVolume::brickLayout when the cells were found
     std::uint64_t m_bouncedSerial = 0; ///< the textures m_cells and the builder's lists were found for
     std::uint64_t m_cellsSerial = 0;

@@ -154,9 +154,10 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     if (anisotropic)
         defines.emplace_back("ANISOTROPIC");
     ConeTracingSetup::addDefines(defines, frame);
-    const gl::Program& program
-        = frame.shaders.program({ anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache",
-            { "irradiance/GatherCells.comp" }, defines });
+    const std::string name = anisotropic ? "irradiance cache (anisotropic)" : "irradiance cache";
+    const gl::Program& program = frame.shaders.program({ name, { "irradiance/GatherCells.comp" }, defines });
+    const gl::Program& backSides = frame.shaders.program({ name + ", back sides",
+        { "irradiance/GatherCells.comp" }, BackSideCells::backSideDefines(defines) });
     const int res = v.frame.resolution;
     const int cellSize = std::min(frame.settings.irradianceCellSize, res);
     const int cells = res / cellSize;
@@ -170,8 +171,16 @@ void VoxelIrradiancePass::execute(FrameContext& frame)
     // The same volume the per-pixel cones would trace: after the second bounce when there is one.
     ConeTracingSetup::applyCellGather(program, frame, anisotropic, cellSize, frame.shape.ambientOcclusion,
         v.irradiance, v.irradianceBack, v.irradianceNormal);
+    m_backSides.bindForGather(program, std::size_t(cells) * std::size_t(cells) * std::size_t(cells));
     program.use();
     m_requested.dispatchOverCells();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT
+        | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    ConeTracingSetup::applyCellGather(backSides, frame, anisotropic, cellSize, frame.shape.ambientOcclusion,
+        v.irradiance, v.irradianceBack, v.irradianceNormal);
+    v.irradianceNormal.bindUnit(2); // the geometry the first dispatch found
+    backSides.use();
+    m_backSides.dispatch();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     m_radianceVersion = v.radianceVersion;
     m_bouncedVersion = v.bouncedVersion;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/BackSideCells.h"
 #include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
 #include "core/RenderPass.h"
@@ -72,6 +73,7 @@ private:
     gl::VertexArray m_emptyVao;
     OccupiedCellList m_newCells; ///< listed by the request pass after a camera move
     OccupiedCellList m_requested; ///< the cells to gather
+    BackSideCells m_backSides; ///< the two-sided ones among them, whose back sides are gathered apart
     std::uint64_t m_radianceVersion = 0;
     std::uint64_t m_cellsSerial = 0; ///< the cache texture last cleared (a new one must be cleared)
     std::uint64_t m_bouncedVersion = 0;

@@ -18,3 +18,18 @@ void appendCell(ivec3 cell)
     if (index % uGroupSize == 0u)
         atomicMax(uGroupsX, index / uGroupSize + 1u);
 }
+
+// appendCell() for a list with room for `capacity` cells: false, and the list as it was, where it is full.
+bool appendCellWithin(ivec3 cell, uint capacity)
+{
+    uint index = atomicAdd(uCount, 1u);
+    if (index >= capacity) {
+        // Each append past the end takes back its own count, so the count ends at the cells listed.
+        atomicAdd(uCount, 0xFFFFFFFFu);
+        return false;
+    }
+    uCells[index] = uint(cell.x) | (uint(cell.y) << 10) | (uint(cell.z) << 20);
+    if (index % uGroupSize == 0u)
+        atomicMax(uGroupsX, index / uGroupSize + 1u);
+    return true;
+}

@@ -6,6 +6,10 @@
 // A wall thinner than a voxel has both faces in the same voxels, whose normals then cancel: such a cell
 // gathers both sides of the axis along which its neighbours are emptiest (the wall's normal for walls
 // along the grid axes, within 45 degrees otherwise), so that pixels on either face find their light.
+// The back sides are gathered apart: this shader lists the two-sided cells (storage buffers 2 and 3), and a
+// second dispatch of it with BACK_SIDES (and CACHED_GEOMETRY) runs over that list alone. Gathered in the same
+// invocation, a back side cost every cell of a group where one cell had one: llvmpipe runs a loop's body for
+// all lanes while any lane needs it (docs/BENCHMARKS.md, "Back sides gathered apart").
 #ifdef CHANGE_SUMS
 #extension GL_NV_shader_atomic_float : require
 #endif
@@ -16,6 +20,11 @@
 
 // Runs over the requested cells (core/OccupiedCellList); a requested cell without voxels is marked empty.
 #include "common/OccupiedCells.glsl"
+#ifndef BACK_SIDES
+#define APPEND_BINDING 2
+#include "common/AppendCell.glsl"
+uniform uint uBackSideCapacity; // room in the list of back sides; a cell past it gathers its back side here
+#endif
 
 layout(local_size_x = 64) in;
 
@@ -177,10 +186,17 @@ void gatherCell(ivec3 cell)
         imageStore(uIrradianceBack, cell, kNone);
     // The gather appears once, in a loop over the sides: llvmpipe runs all code of a shader in every lane, so
     // three gathers written out (one side, or two) cost every cell the first steps of fifteen cones, and the
-    // second pass of this loop runs only where a lane has a second side. uOne keeps the compiler from
-    // unrolling it back into two copies.
-    int sides = (twoSided ? 2 : 1) * uOne;
-    for (int side = 0; side < sides; ++side) {
+    // second pass of this loop runs only where a lane has a second side: a two-sided cell whose back side did
+    // not fit the list. uOne keeps the compiler from unrolling it back into two copies.
+#ifdef BACK_SIDES
+    int first = 1;
+    int sides = 2 * uOne;
+#else
+    int first = 0;
+    bool backLater = twoSided && appendCellWithin(cell, uBackSideCapacity);
+    int sides = (twoSided && !backLater ? 2 : 1) * uOne;
+#endif
+    for (int side = first; side < sides; ++side) {
         vec3 direction = side == 0 ? n : -n;
         storeGathered(cell, side == 0, gatherDiffuse(centre, direction));
     }
