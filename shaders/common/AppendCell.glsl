@@ -10,13 +10,18 @@ layout(std430, binding = APPEND_BINDING + 1) writeonly buffer OccupiedCells { ui
 
 uniform uint uGroupSize; // the heavy shader's local_size_x
 
-void appendCell(ivec3 cell)
+// Writes the cell at the index an append took.
+void storeCell(uint index, ivec3 cell)
 {
-    uint index = atomicAdd(uCount, 1u);
     uCells[index] = uint(cell.x) | (uint(cell.y) << 10) | (uint(cell.z) << 20);
     // The invocation that starts a new heavy workgroup raises the number of workgroups to include it.
     if (index % uGroupSize == 0u)
         atomicMax(uGroupsX, index / uGroupSize + 1u);
+}
+
+void appendCell(ivec3 cell)
+{
+    storeCell(atomicAdd(uCount, 1u), cell);
 }
 
 // appendCell() for a list with room for `capacity` cells: false, and the list as it was, where it is full.
@@ -28,8 +33,6 @@ bool appendCellWithin(ivec3 cell, uint capacity)
         atomicAdd(uCount, 0xFFFFFFFFu);
         return false;
     }
-    uCells[index] = uint(cell.x) | (uint(cell.y) << 10) | (uint(cell.z) << 20);
-    if (index % uGroupSize == 0u)
-        atomicMax(uGroupsX, index / uGroupSize + 1u);
+    storeCell(index, cell);
     return true;
 }

@@ -72,6 +72,15 @@ vec4 blendChains(vec4 a, vec4 b, vec4 c, vec3 w)
     float alpha = 1.0 - exp2(dot(w, log2(t)));
     return linear.a > 1e-6 ? vec4(linear.rgb * (alpha / linear.a), alpha) : linear;
 }
+
+// The chains a cone travelling along dir reads at grid level `level` (>= 1), blended (blendChains).
+vec4 sampleChains(sampler3D towards, vec3 uvw, float level, vec3 dir)
+{
+    float l = max(level - 1.0, 0.0);
+    return blendChains(sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l),
+        sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l), sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l),
+        dir * dir);
+}
 #endif
 
 #ifndef ANISOTROPIC
@@ -90,11 +99,7 @@ vec4 sampleGrid(sampler3D radiance, sampler3D towards, vec3 uvw, float level, ve
     // (marchPhase), each a loop of its own that fetches only what its footprints need.
     COUNT_FETCHES(4);
     vec4 finest = sampleLevel0(radiance, uvw);
-    vec3 w = dir * dir; // sums to one for a unit direction
-    float l = max(level - 1.0, 0.0);
-    vec4 directional = blendChains(sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l),
-        sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l), sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l), w);
-    return mix(finest, directional, clamp(level, 0.0, 1.0));
+    return mix(finest, sampleChains(towards, uvw, level, dir), clamp(level, 0.0, 1.0));
 }
 #define SAMPLE_GRID(radiance, towards, uvw, level, dir) sampleGrid(radiance, towards, uvw, level, dir)
 #endif
@@ -125,11 +130,7 @@ vec4 samplePhase(int phase, sampler3D radiance TOWARDS_PARAM, vec3 uvw, float le
     }
     if (phase == kPhaseCoarse) {
         COUNT_FETCHES(3);
-        vec3 w = dir * dir;
-        float l = max(level - 1.0, 0.0);
-        return blendChains(sampleTowards(towards, dir.x > 0.0 ? 0 : 1, uvw, l),
-            sampleTowards(towards, dir.y > 0.0 ? 2 : 3, uvw, l), sampleTowards(towards, dir.z > 0.0 ? 4 : 5, uvw, l),
-            w);
+        return sampleChains(towards, uvw, level, dir);
     }
 #endif
     return SAMPLE_GRID(radiance, towards, uvw, level, dir);

@@ -903,10 +903,10 @@ void HardCasesTest::thinWallLeak()
     const render::Scene scene = twoRooms(0.5f * 0.1f * kTwoRoomsVoxel); // a tenth of a voxel
     // The irradiance cache must keep the wall's two sides apart too: its cells there are two-sided (the
     // faces' normals cancel) and gather each side from that side. It leaks a little more than per-pixel cones
-    // (measured 2.5% against 2.0%; 5.0% while lookups took cells facing away from the pixel for its own, see
+    // (measured 2.3% against 1.8%; 5.0% while lookups took cells facing away from the pixel for its own, see
     // wallsAFewVoxelsThickKeepTheirSides): a floor cell under the wall belongs to both rooms and gathers from
     // one point above the wall's voxels, where pixel cones start on their own side; hence its own bound
-    // (docs/STABILITY.md). Every bounce: 7.7% and 8.3% (16.9% and 20.9% before).
+    // (docs/STABILITY.md). Every bounce: 7.2% and 7.8% (16.9% and 20.9% while lookups took such cells).
     for (const int bounces : { 1, render::RenderSettings::kConvergedBounces })
         for (const bool irradianceCache : { false, true }) {
             render::RenderSettings settings;
@@ -928,7 +928,7 @@ void HardCasesTest::thinWallLeak()
 // Walls one and a half and two and a half voxels thick: each face has cells of its own, one-sided, facing its
 // own room. A lookup (the pixels' and the bounce iteration's) must not take a cell facing away from the
 // surface it lights: it took its far side's light for its own, and these walls leaked 17.4% and 11.5% with
-// every bounce and the cache (measured 7.4% and 6.4% since; docs/STABILITY.md).
+// every bounce and the cache (measured 6.9% and 5.9% now; docs/STABILITY.md).
 void HardCasesTest::wallsAFewVoxelsThickKeepTheirSides()
 {
     for (const float voxels : { 1.5f, 2.5f }) {

@@ -183,7 +183,8 @@ void CornellImageTest::referenceRelativeMse()
 // inside or just past it, the light gathered across that face jumped by a third between neighbouring pixels
 // (0.115 to 0.072 at 512 pixels), where the path tracer's falls smoothly from left to right. Measured as the
 // largest second difference along rows of the face, over the row's mean: 0.017-0.061 with that edge,
-// 0.003-0.006 since. And the face's top rows against those just below.
+// 0.003-0.006 once it was gone, 0.010 since oblique cones multiply their chains' transmittances. And the
+// face's top rows against those just below.
 void CornellImageTest::gatheredLightIsSmoothAcrossAnAskewFace()
 {
     render::RenderSettings settings;
