@@ -98,6 +98,10 @@ struct VoxelVolume {
     gl::Texture higherBounceCellNormal;
     gl::Texture higherBounceBase;
     gl::Texture higherBounceBaseBack;
+    /// How much the last gather of the iterate changed each cell's (higherBounceChange*): what a later
+    /// iteration's reinjection adds (bounce/ReinjectBounce.comp).
+    gl::Texture higherBounceChange;
+    gl::Texture higherBounceChangeBack;
     /// With the irradiance cache (VoxelIrradiancePass), one texel per cell of
     /// RenderSettings::irradianceCellSize^3 voxels, all rgba16f: rgb = sum_i w_i L_i of the diffuse cones
     /// gathered from the cell's surface along its normal (irradiance) and, for two-sided cells, against it

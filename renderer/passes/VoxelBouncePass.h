@@ -75,12 +75,18 @@ private:
      * Gathers the diffuse cones over @p grid's cells into @p front and @p back (normals in @p normals), from
      * the first-bounce light (@p fromFirstBounce) or the iterate in `bounced`. With @p sumsIteration >= 0
      * also sums the change from what the cells held (nothing, with @p firstGather) into that iteration's
-     * sums. @p shiftIterate (a gather of new first-bounce light into the higher-bounce base): the
-     * higher-bounce cells' gather of the iterate moves by what the base changed.
+     * sums.
      */
+    /**
+     * What else a gather writes: with ShiftIterate (a gather of new first-bounce light into the higher-bounce
+     * base), the higher-bounce cells' gather of the iterate moves by what the base changed; with WriteChange
+     * (a later gather of the iterate), how much each cell's gather changed goes to the higher-bounce change
+     * textures.
+     */
+    enum class GatherExtra { None, ShiftIterate, WriteChange };
     void gather(FrameContext& frame, CellGrid& grid, const gl::Texture& front, const gl::Texture& back,
         const gl::Texture& normals, bool fromFirstBounce, int sumsIteration, bool firstGather,
-        bool shiftIterate = false);
+        GatherExtra extra = GatherExtra::None);
     /**
      * Iteration @p iteration of the solve (from 0): gather the cells from the current iterate, decide whether
      * to add the tail (converging only), reinject, filter; the sums go to the iteration's texels of m_sums.
@@ -92,8 +98,16 @@ private:
      * first-bounce light on both sizes of cells (after the earlier iterate, with @p compare).
      */
     void iterateSplit(FrameContext& frame, bool compare, bool firstOfSolve, int iteration);
-    /** The tail decision (converging only), L = L_direct + albedo * gathered, the filter. */
-    void reinject(FrameContext& frame, bool compare, int iteration);
+    /**
+     * How a reinjection finds each voxel's new radiance. FromCleared: the volume is cleared first (its
+     * previous iterate is the first-bounce light), L = L_direct + albedo * gathered; FirstBounceOnly: the
+     * same when the higher bounces add nothing yet (a cold start's first iteration); OverIterate: the same
+     * sum over the iterate in the volume; AddHigherChange: a split solve's later iteration, the iterate plus
+     * albedo times what the higher-bounce gather changed by, the same sum for one lookup a voxel.
+     */
+    enum class Reinjection { FromCleared, FirstBounceOnly, OverIterate, AddHigherChange };
+    /** The tail decision (converging only), the reinjection, the filter. */
+    void reinject(FrameContext& frame, Reinjection how, int iteration);
     /**
      * One iteration's sums over the occupied voxels, of |change| of the radiance and of the radiance, and the
      * tail its reinjection added (0 for none) with that tail's estimated relative error.
@@ -108,6 +122,9 @@ private:
     /// Above this ratio between consecutive changes the solve is too slow for its tail to be trusted.
     static constexpr double kLargestRatio = 0.9;
     static constexpr int kBatchIterations = 8; ///< iterations an interactive frame runs between readbacks
+    /// The iterations of a split solve (from 0) up to this add their higher bounces' change to the iterate
+    /// (Reinjection::AddHigherChange); later ones take the whole sum again.
+    static constexpr int kIncrementalIterations = 3;
 
     const gl::Program* m_reinject = nullptr;
     CellGrid m_cells; ///< the occupied bounce cells, relisted when the voxels change
@@ -133,6 +150,7 @@ private:
     /// must be cleared before the next reinjection.
     bool m_staleVoxels = false;
     VoxelGridFrame m_grid; ///< where the grid was for the last solve
+    bool m_coldSolve = false; ///< the current split solve started from the first-bounce light alone
     bool m_baseInPlace = false; ///< the grid has not moved since the higher-bounce base was gathered
 };
 

@@ -68,7 +68,7 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "bounce cells", chain(cells, 8, false) });
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
-        // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): four rgba16f, the normal rgba8
+        // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): six rgba16f, the normal rgba8
         // snorm.
         const std::uint64_t higherCells = n / std::uint64_t(settings.higherBounceCellVoxels(int(n)));
         if (settings.splitsHigherBounces(int(n))) {
@@ -78,6 +78,9 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
             textures.push_back({ "higher-bounce cells, first-bounce light", chain(higherCells, 8, false) });
             textures.push_back(
                 { "higher-bounce cells, first-bounce light, back faces", chain(higherCells, 8, false) });
+            textures.push_back({ "higher-bounce cells, last change", chain(higherCells, 8, false) });
+            textures.push_back(
+                { "higher-bounce cells, last change, back faces", chain(higherCells, 8, false) });
         }
     }
     // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory

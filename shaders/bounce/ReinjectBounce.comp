@@ -27,6 +27,12 @@ uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform int uCellVoxels; // voxels per bounce cell side
 uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
+// The iterations after a split solve's first add to the previous iterate what its higher bounces changed by:
+// uHigher and uHigherBack then hold the last gather's change (irradiance/GatherCells.comp, WRITE_CHANGE), and
+// the sum above is unchanged but for rounding, as the lookups are linear in what the cells hold. This is the
+// step's whole cost but for the one lookup, where the sum looked up the bounce cells and both higher-bounce
+// gathers again.
+uniform bool uIncrement;
 // The higher bounces' cells (passes/VoxelBouncePass), when the solve splits them off: their gather of the
 // previous iterate, its cells' normals, and their gather of L_direct.
 uniform bool uHigherBounces;
@@ -45,20 +51,22 @@ layout(binding = 7) uniform sampler3D uHigherBaseBack;
 // voxel, or two surfaces pressed together) sends the same radiance both ways, so it takes the mean of what
 // reaches its two sides: that keeps the power it reflects, where the sum would send each side's light out of
 // both sides and, two faces lighting each other, grow without bound from one iteration to the next.
+// What the cells hold is light, never below zero, unless `change` (uIncrement).
 vec3 ownCell(sampler3D front, sampler3D back, sampler3D normals, sampler3D minusFront, sampler3D minusBack,
-    bool subtract, int cellVoxels, ivec3 voxel, vec3 n, bool faced)
+    bool subtract, int cellVoxels, ivec3 voxel, vec3 n, bool faced, bool change)
 {
     ivec3 cell = voxel / cellVoxels;
     vec4 cellNormal = texelFetch(normals, cell, 0);
     if (cellNormal.w <= 0.0)
         return vec3(0.0);
+    vec3 floor = change ? vec3(-65504.0) : vec3(0.0);
     vec3 frontLight = texelFetch(front, cell, 0).rgb - (subtract ? texelFetch(minusFront, cell, 0).rgb : vec3(0.0));
     if (cellNormal.w < 0.75) // one-sided (common/IrradianceLookup.glsl)
-        return max(frontLight, vec3(0.0));
+        return max(frontLight, floor);
     vec3 backLight = texelFetch(back, cell, 0).rgb - (subtract ? texelFetch(minusBack, cell, 0).rgb : vec3(0.0));
     if (!faced)
-        return 0.5 * (max(frontLight, vec3(0.0)) + max(backLight, vec3(0.0)));
-    return max(dot(n, cellNormal.xyz) >= 0.0 ? frontLight : backLight, vec3(0.0));
+        return 0.5 * (max(frontLight, floor) + max(backLight, floor));
+    return max(dot(n, cellNormal.xyz) >= 0.0 ? frontLight : backLight, floor);
 }
 
 void main()
@@ -69,7 +77,9 @@ void main()
     if (listed) {
         ivec3 texel = voxelLoadTexel(voxel);
         vec4 albedo = texelFetch(uAlbedo, texel, 0);
-        vec4 result = texelFetch(uDirect, texel, 0);
+        // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
+        vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : texelFetch(uDirect, texel, 0).rgb;
+        vec4 result = uIncrement ? vec4(previous, texelFetch(uDirect, texel, 0).a) : texelFetch(uDirect, texel, 0);
         if (albedo.a > 0.0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
             vec3 normalSum = texelFetch(uNormal, texel, 0).xyz;
             float normalLength = length(normalSum);
@@ -77,22 +87,29 @@ void main()
             vec3 n = normalLength > 1e-4 ? normalSum / normalLength : vec3(0.0);
             vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
             vec4 looked;
-            vec3 gathered = faced && lookUpIrradiance(p, n, looked)
-                ? looked.rgb
-                : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
-                    uCellVoxels, voxel, n, faced);
-            if (uHigherBounces) {
+            vec3 gathered;
+            if (uIncrement) {
+                gathered = faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false,
+                                        uHigherCells, uHigherCellSize, p, n, looked)
+                    ? looked.rgb
+                    : ownCell(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false, uHigherCellVoxels,
+                        voxel, n, faced, true);
+            } else {
+                gathered = faced && lookUpIrradiance(p, n, looked)
+                    ? looked.rgb
+                    : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
+                        uCellVoxels, voxel, n, faced, false);
                 // Rounding can take a difference of two gathers of nearly the same light below zero.
-                gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack,
-                                         true, uHigherCells, uHigherCellSize, p, n, looked)
-                    ? max(looked.rgb, vec3(0.0))
-                    : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
-                        uHigherCellVoxels, voxel, n, faced);
+                if (uHigherBounces)
+                    gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase,
+                                             uHigherBaseBack, true, uHigherCells, uHigherCellSize, p, n, looked)
+                        ? max(looked.rgb, vec3(0.0))
+                        : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
+                            uHigherCellVoxels, voxel, n, faced, false);
             }
-            result.rgb += albedo.rgb * gathered * albedo.a;
+            // A change may be negative (a light dimmed); rounding must not take the sum below zero.
+            result.rgb = max(result.rgb + albedo.rgb * gathered * albedo.a, vec3(0.0));
         }
-        // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
-        vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : texelFetch(uDirect, texel, 0).rgb;
         change = dot(abs(result.rgb - previous), vec3(1.0));
         total = dot(result.rgb, vec3(1.0));
         // Where bounce/DecideTail.comp found the tail q / (1 - q) trustworthy, store L + tail * change: the limit

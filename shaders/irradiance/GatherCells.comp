@@ -40,7 +40,7 @@ layout(binding = 1) uniform sampler3D uNormal;
 uniform int uIteration; // this iteration's index in the solve
 uniform bool uFirstGather; // what the cells hold is not an earlier gather of this solve: count it as nothing
 #define GATHER_ACCESS
-#elif defined(SHIFT_ITERATE)
+#elif defined(SHIFT_ITERATE) || defined(WRITE_CHANGE)
 #define GATHER_ACCESS
 #else
 #define GATHER_ACCESS writeonly
@@ -51,6 +51,13 @@ uniform bool uFirstGather; // what the cells hold is not an earlier gather of th
 // the gather of the iterate moves by as much, so that the two still differ by the earlier solve's higher bounces.
 layout(rgba16f, binding = 4) uniform image3D uIterate;
 layout(rgba16f, binding = 5) uniform image3D uIterateBack;
+#endif
+#ifdef WRITE_CHANGE
+// The bounce iteration's later gathers also store how much each cell's gather changed from the one it replaces,
+// the change of this iteration's higher bounces that the reinjection adds to each voxel
+// (bounce/ReinjectBounce.comp): one lookup a voxel, where the whole sum took three.
+layout(rgba16f, binding = 6) writeonly uniform image3D uChange;
+layout(rgba16f, binding = 7) writeonly uniform image3D uChangeBack;
 #endif
 layout(rgba16f, binding = 0) GATHER_ACCESS uniform image3D uIrradiance;     // along the cell normal
 layout(rgba16f, binding = 1) GATHER_ACCESS uniform image3D uIrradianceBack; // against it, two-sided cells only
@@ -87,8 +94,31 @@ float cellOccupancy(ivec3 cell, ivec3 offset)
 vec3 gChange = vec3(0.0); // this invocation's part of the change sums (CHANGE_SUMS), per channel
 float gTotal = 0.0;
 
+// A cell side with no surface: a lookup passes over it.
+void storeNone(ivec3 cell, bool front)
+{
+#ifdef WRITE_CHANGE
+    if (front)
+        imageStore(uChange, cell, kNone);
+    else
+        imageStore(uChangeBack, cell, kNone);
+#endif
+    if (front)
+        imageStore(uIrradiance, cell, kNone);
+    else
+        imageStore(uIrradianceBack, cell, kNone);
+}
+
 void storeGathered(ivec3 cell, bool front, vec4 gathered)
 {
+#ifdef WRITE_CHANGE
+    vec4 replaced = front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell);
+    vec4 change = vec4(gathered.rgb - (replaced.a >= 0.0 ? replaced.rgb : vec3(0.0)), gathered.a);
+    if (front)
+        imageStore(uChange, cell, change);
+    else
+        imageStore(uChangeBack, cell, change);
+#endif
 #ifdef CHANGE_SUMS
     vec3 before = uFirstGather ? vec3(0.0) : max((front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell)).rgb, vec3(0.0));
     gChange += abs(gathered.rgb - before);
@@ -120,8 +150,8 @@ void gatherCell(ivec3 cell)
 #ifdef CACHED_GEOMETRY
     vec4 geometry = texelFetch(uCellGeometry, cell, 0);
     if (geometry.w <= 0.0) {
-        imageStore(uIrradiance, cell, kNone);
-        imageStore(uIrradianceBack, cell, kNone);
+        storeNone(cell, true);
+        storeNone(cell, false);
         return;
     }
     for (int z = 0; z < uCellSize; ++z)
@@ -150,8 +180,8 @@ void gatherCell(ivec3 cell)
                 occupied += 1.0;
             }
     if (occupied == 0.0) {
-        imageStore(uIrradiance, cell, kNone);
-        imageStore(uIrradianceBack, cell, kNone);
+        storeNone(cell, true);
+        storeNone(cell, false);
         imageStore(uCellNormal, cell, vec4(0.0));
         return;
     }
@@ -183,7 +213,7 @@ void gatherCell(ivec3 cell)
     n = normalize(round(clamp(stored, -1.0, 1.0) * 127.0) / 127.0);
 #endif
     if (!twoSided) // (a two-sided cell's back face is read first for its change: CHANGE_SUMS)
-        imageStore(uIrradianceBack, cell, kNone);
+        storeNone(cell, false);
     // The gather appears once, in a loop over the sides: llvmpipe runs all code of a shader in every lane, so
     // three gathers written out (one side, or two) cost every cell the first steps of fifteen cones, and the
     // second pass of this loop runs only where a lane has a second side: a two-sided cell whose back side did
