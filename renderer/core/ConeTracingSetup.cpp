@@ -75,6 +75,16 @@ void ConeTracingSetup::apply(const gl::Program& program, const FrameContext& fra
     program.set("uClipGrid", grids);
 }
 
+void ConeTracingSetup::bindVolumeSampler(const FrameContext& frame, GLuint sampler)
+{
+    glBindSampler(5, sampler);
+    glBindSampler(6, sampler);
+    for (std::size_t k = 0; k < frame.coarserLevels.size(); ++k) {
+        glBindSampler(GLuint(CLIP_RADIANCE_UNIT + int(k)), sampler);
+        glBindSampler(GLuint(CLIP_TOWARDS_UNIT + int(k)), sampler);
+    }
+}
+
 void ConeTracingSetup::clipLevelFrames(
     const FrameContext& frame, std::vector<glm::vec4>& boxes, std::vector<glm::vec4>& grids)
 {

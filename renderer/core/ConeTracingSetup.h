@@ -32,11 +32,6 @@ public:
     static float coneOffsetMetres(const FrameContext& frame, const VoxelGridFrame& grid);
     static constexpr int kOffsetGrid = 128;
     /**
-     * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to
-     * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
-     * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
-     */
-    /**
      * What common/CacheBand.glsl reads: in a clipmap, the finest level, the scene's grid and the band along
      * the finest level's moving faces where pixels trace their own cones; no band for a dense grid.
      */
@@ -47,8 +42,18 @@ public:
      */
     static void clipLevelFrames(
         const FrameContext& frame, std::vector<glm::vec4>& boxes, std::vector<glm::vec4>& grids);
+    /**
+     * apply() and what irradiance/GatherCells.comp reads besides: cells of @p cellSize^3 voxels, written to
+     * @p front, @p back and @p normals (the irradiance cache's layout), ambient visibility only with @p ao.
+     * Shared by the irradiance cache and the bounce iteration, which gather cells the same way.
+     */
     static void applyCellGather(const gl::Program& program, const FrameContext& frame, bool anisotropic,
         int cellSize, bool ao, const gl::Texture& front, const gl::Texture& back, const gl::Texture& normals);
+    /**
+     * Binds @p sampler on every unit apply() binds a volume cones read to, which then filter as it says;
+     * 0 gives them back their textures' own filtering.
+     */
+    static void bindVolumeSampler(const FrameContext& frame, GLuint sampler);
 };
 
 } // namespace vct::render

@@ -16,12 +16,19 @@ public:
     Sampler() = default;
     /** Nearest-texel reads of raw depth, no comparison, clamped to the edge. */
     static Sampler createRawDepth();
+    /**
+     * Trilinear reads within the mip level nearest the one asked for, outside the texture zero, as the voxel
+     * volumes' own border: a cone's sample then reads one level where a blend of two read two.
+     */
+    static Sampler createNearestLevel();
 
     GLuint id() const { return m_handle.id(); }
     explicit operator bool() const { return bool(m_handle); }
     void bindUnit(GLuint unit) const { glBindSampler(unit, id()); }
 
 private:
+    static Sampler create(GLenum minFilter, GLenum magFilter, GLenum wrap);
+
     Handle<deleteSampler> m_handle;
 };
 

@@ -225,6 +225,13 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
         }
         gather.use();
     };
+    // The solve's gathers read one mip level a sample, the nearest, where the pixels' cones blend two: what
+    // they gather is looked up between cells and summed over bounces, so a sample's footprint rounded to a
+    // level does not show, and the gathers take a quarter to a third less time (docs/DESIGN.md, "The solve's
+    // gathers read the nearest mip level"). The pixels' own cache, read that way, showed steps between cells.
+    if (!m_nearestLevel)
+        m_nearestLevel = gl::Sampler::createNearestLevel();
+    ConeTracingSetup::bindVolumeSampler(frame, m_nearestLevel.id());
     const std::size_t cells = std::size_t(v.frame.resolution / grid.cellSize);
     setUp(program, grid.geometryKnown);
     m_backSides.bindForGather(program, cells * cells * cells);
@@ -234,6 +241,7 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     setUp(backSides, true);
     m_backSides.dispatch();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    ConeTracingSetup::bindVolumeSampler(frame, 0);
     grid.geometryKnown = true;
 }
 

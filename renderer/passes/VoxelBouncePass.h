@@ -6,6 +6,7 @@
 #include "core/RenderPass.h"
 #include "core/VoxelMipBuilder.h"
 #include "gl/Program.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 
 #include <cstdint>
@@ -130,6 +131,7 @@ private:
     CellGrid m_cells; ///< the occupied bounce cells, relisted when the voxels change
     CellGrid m_higherCells; ///< the higher bounces' cells when the solve splits them off
     VoxelMipBuilder m_builder;
+    gl::Sampler m_nearestLevel; ///< the gathers' filtering of the volumes they trace (gather())
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
     BackSideCells m_backSides; ///< the two-sided cells of the gather running, whose back sides go apart
     std::uint64_t m_brickLayout = 0; ///< VoxelVolume::brickLayout when the cells were found
