@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace vct::render {
 
@@ -52,6 +53,16 @@ void VoxelMipBuilder::listCells(const ShaderLibrary& shaders, int resolution, in
         glMemoryBarrier(
             GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+}
+
+const OccupiedCellList& VoxelMipBuilder::cellsOfSize(int cellVoxels) const
+{
+    int level = 0;
+    while ((1 << level) < cellVoxels)
+        ++level;
+    if ((1 << level) != cellVoxels || level < 1 || std::size_t(level) > m_levelCells.size())
+        throw std::logic_error("no cells of " + std::to_string(cellVoxels) + " voxels were listed");
+    return m_levelCells[std::size_t(level - 1)];
 }
 
 void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume)

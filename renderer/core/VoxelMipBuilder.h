@@ -27,6 +27,11 @@ public:
      */
     void listCells(const ShaderLibrary& shaders, int resolution, int levels,
         const std::vector<const OccupiedCellList*>& occupied);
+    /**
+     * The cells of @p cellVoxels^3 voxels (a power of two from 2 to the grid) that listCells() listed: every
+     * one holding a voxel.
+     */
+    const OccupiedCellList& cellsOfSize(int cellVoxels) const;
     /** Levels 1..N of @p volume from its level 0. */
     void buildBox(const ShaderLibrary& shaders, gl::Texture& volume);
     /**

@@ -235,7 +235,7 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     const std::size_t cells = std::size_t(v.frame.resolution / grid.cellSize);
     setUp(program, grid.geometryKnown);
     m_backSides.bindForGather(program, cells * cells * cells);
-    grid.list.dispatchOverCells();
+    grid.list->dispatchOverCells();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT
         | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     setUp(backSides, true);
@@ -448,11 +448,12 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_bouncedSerial = v.bounced.serial();
         m_brickLayout = v.brickLayout;
         m_cellsSerial = v.bounceIrradiance.serial();
-        m_cells.cellSize = frame.settings.bounceCellVoxels(res);
-        m_cells.list.build(
-            frame.shaders, v.albedo, VoxelRegion::whole(res / m_cells.cellSize), m_cells.cellSize);
+        // The mip filter lists the cells of every level above the occupied voxels: those of the bounce cells'
+        // sizes are the cells to gather, where lists of their own searched the whole grid's voxels again.
         m_builder.listCells(
             frame.shaders, res, v.frame.levelCount(), v.occupiedVoxels(frame.scene.hasDynamicMeshes()));
+        m_cells.cellSize = frame.settings.bounceCellVoxels(res);
+        m_cells.list = &m_builder.cellsOfSize(m_cells.cellSize);
         m_listedMaterials = v.materialsVersion;
         m_cells.geometryKnown = false;
         m_higherCells.cellSize = 0;
@@ -470,8 +471,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         }
         m_higherCellsSerial = v.higherBounceIrradiance.serial();
         m_higherCells.cellSize = frame.settings.higherBounceCellVoxels(res);
-        m_higherCells.list.build(frame.shaders, v.albedo, VoxelRegion::whole(res / m_higherCells.cellSize),
-            m_higherCells.cellSize);
+        m_higherCells.list = &m_builder.cellsOfSize(m_higherCells.cellSize);
         m_higherCells.geometryKnown = false;
     }
     // An interactive view starts a new solve from the last one, so that a light edit brightens or dims the

@@ -68,7 +68,7 @@ private:
     void buildMips(FrameContext& frame);
     /** The occupied cells of one size, and whether their normals and sides were found already. */
     struct CellGrid {
-        OccupiedCellList list;
+        const OccupiedCellList* list = nullptr; ///< the mip builder's list of cells of this size
         int cellSize = 0;
         bool geometryKnown = false;
     };
