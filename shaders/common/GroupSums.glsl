@@ -1,6 +1,6 @@
 // Two sums over a work group of 64 invocations, added to two neighbouring texels of uSums with one atomic add
-// each per group instead of one per invocation. Every invocation of the group must call addGroupSums (it has
-// barriers). Needs GL_NV_shader_atomic_float, and SUMS_BINDING defined before the include.
+// each per group instead of one per invocation. Every invocation of the group must call addGroupSums (it has a
+// barrier). Needs GL_NV_shader_atomic_float, and SUMS_BINDING defined before the include.
 layout(r32f, binding = SUMS_BINDING) uniform image2D uSums;
 
 shared float sGroupFirst[64];
@@ -11,15 +11,15 @@ void addGroupSums(float first, float second, int texel)
     sGroupFirst[gl_LocalInvocationIndex] = first;
     sGroupSecond[gl_LocalInvocationIndex] = second;
     barrier();
-    for (uint stride = 32u; stride > 0u; stride >>= 1u) {
-        if (gl_LocalInvocationIndex < stride) {
-            sGroupFirst[gl_LocalInvocationIndex] += sGroupFirst[gl_LocalInvocationIndex + stride];
-            sGroupSecond[gl_LocalInvocationIndex] += sGroupSecond[gl_LocalInvocationIndex + stride];
-        }
-        barrier();
-    }
+    // One invocation adds the 64 up: a tree of halving strides took a barrier per level, and llvmpipe pays
+    // for each barrier in every invocation of the group (docs/BENCHMARKS.md, "One barrier in the group sums").
     if (gl_LocalInvocationIndex == 0u) {
-        imageAtomicAdd(uSums, ivec2(texel, 0), sGroupFirst[0]);
-        imageAtomicAdd(uSums, ivec2(texel + 1, 0), sGroupSecond[0]);
+        float firstSum = 0.0, secondSum = 0.0;
+        for (int i = 0; i < 64; ++i) {
+            firstSum += sGroupFirst[i];
+            secondSum += sGroupSecond[i];
+        }
+        imageAtomicAdd(uSums, ivec2(texel, 0), firstSum);
+        imageAtomicAdd(uSums, ivec2(texel + 1, 0), secondSum);
     }
 }
