@@ -4,6 +4,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace vct::render {
@@ -62,6 +63,10 @@ private:
     gl::Texture
         m_listed; ///< r32ui over the cells of level 1: bit k set where the cell of level k + 1 is listed
     std::vector<OccupiedCellList> m_levelCells; ///< [k]: the listed cells of grid level k + 1
+    std::uint64_t m_listing = 0; ///< how many times listCells() ran
+    /// The directional texture whose levels were last cleared (its serial), and for which listing.
+    std::uint64_t m_clearedSerial = 0;
+    std::uint64_t m_clearedListing = 0;
 };
 
 } // namespace vct::render
