@@ -73,18 +73,18 @@ private:
         bool geometryKnown = false;
     };
     /**
-     * Gathers the diffuse cones over @p grid's cells into @p front and @p back (normals in @p normals), from
-     * the first-bounce light (@p fromFirstBounce) or the iterate in `bounced`. With @p sumsIteration >= 0
-     * also sums the change from what the cells held (nothing, with @p firstGather) into that iteration's
-     * sums.
-     */
-    /**
      * What else a gather writes: with ShiftIterate (a gather of new first-bounce light into the higher-bounce
      * base), the higher-bounce cells' gather of the iterate moves by what the base changed; with WriteChange
      * (a later gather of the iterate), how much each cell's gather changed goes to the higher-bounce change
      * textures.
      */
     enum class GatherExtra { None, ShiftIterate, WriteChange };
+    /**
+     * Gathers the diffuse cones over @p grid's cells into @p front and @p back (normals in @p normals), from
+     * the first-bounce light (@p fromFirstBounce) or the iterate in `bounced`. With @p sumsIteration >= 0
+     * also sums the change from what the cells held (nothing, with @p firstGather) into that iteration's
+     * sums; @p extra as GatherExtra says.
+     */
     void gather(FrameContext& frame, CellGrid& grid, const gl::Texture& front, const gl::Texture& back,
         const gl::Texture& normals, bool fromFirstBounce, int sumsIteration, bool firstGather,
         GatherExtra extra = GatherExtra::None);

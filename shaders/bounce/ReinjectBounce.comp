@@ -29,9 +29,8 @@ uniform int uCellVoxels; // voxels per bounce cell side
 uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
 // The iterations after a split solve's first add to the previous iterate what its higher bounces changed by:
 // uHigher and uHigherBack then hold the last gather's change (irradiance/GatherCells.comp, WRITE_CHANGE), and
-// the sum above is unchanged but for rounding, as the lookups are linear in what the cells hold. This is the
-// step's whole cost but for the one lookup, where the sum looked up the bounce cells and both higher-bounce
-// gathers again.
+// the sum above is unchanged but for rounding, as the lookups are linear in what the cells hold: one lookup a
+// voxel, where the whole sum takes three (the bounce cells' gather and both higher-bounce gathers).
 uniform bool uIncrement;
 // The higher bounces' cells (passes/VoxelBouncePass), when the solve splits them off: their gather of the
 // previous iterate, its cells' normals, and their gather of L_direct.
@@ -59,14 +58,14 @@ vec3 ownCell(sampler3D front, sampler3D back, sampler3D normals, sampler3D minus
     vec4 cellNormal = texelFetch(normals, cell, 0);
     if (cellNormal.w <= 0.0)
         return vec3(0.0);
-    vec3 floor = change ? vec3(-65504.0) : vec3(0.0);
+    vec3 lowest = change ? vec3(-65504.0) : vec3(0.0);
     vec3 frontLight = texelFetch(front, cell, 0).rgb - (subtract ? texelFetch(minusFront, cell, 0).rgb : vec3(0.0));
     if (cellNormal.w < 0.75) // one-sided (common/IrradianceLookup.glsl)
-        return max(frontLight, floor);
+        return max(frontLight, lowest);
     vec3 backLight = texelFetch(back, cell, 0).rgb - (subtract ? texelFetch(minusBack, cell, 0).rgb : vec3(0.0));
     if (!faced)
-        return 0.5 * (max(frontLight, floor) + max(backLight, floor));
-    return max(dot(n, cellNormal.xyz) >= 0.0 ? frontLight : backLight, floor);
+        return 0.5 * (max(frontLight, lowest) + max(backLight, lowest));
+    return max(dot(n, cellNormal.xyz) >= 0.0 ? frontLight : backLight, lowest);
 }
 
 void main()

@@ -12,7 +12,7 @@ void addGroupSums(float first, float second, int texel)
     sGroupSecond[gl_LocalInvocationIndex] = second;
     barrier();
     // One invocation adds the 64 up: a tree of halving strides took a barrier per level, and llvmpipe pays
-    // for each barrier in every invocation of the group (docs/BENCHMARKS.md, "One barrier in the group sums").
+    // for each barrier in every invocation of the group (docs/BENCHMARKS.md, "The bounce solve's cheaper steps").
     if (gl_LocalInvocationIndex == 0u) {
         float firstSum = 0.0, secondSum = 0.0;
         for (int i = 0; i < 64; ++i) {
