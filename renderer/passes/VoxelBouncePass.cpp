@@ -227,7 +227,7 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     };
     // The solve's gathers read one mip level a sample, the nearest, where the pixels' cones blend two: what
     // they gather is looked up between cells and summed over bounces, so a sample's footprint rounded to a
-    // level does not show, and the gathers take a quarter to a third less time (docs/DESIGN.md, "The solve's
+    // level does not show, and the gathers take a fifth to a third less time (docs/DESIGN.md, "The solve's
     // gathers read the nearest mip level"). The pixels' own cache, read that way, showed steps between cells.
     if (!m_nearestLevel)
         m_nearestLevel = gl::Sampler::createNearestLevel();
