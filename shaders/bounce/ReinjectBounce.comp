@@ -76,9 +76,10 @@ void main()
     if (listed) {
         ivec3 texel = voxelLoadTexel(voxel);
         vec4 albedo = texelFetch(uAlbedo, texel, 0);
+        vec4 direct = texelFetch(uDirect, texel, 0);
         // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
-        vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : texelFetch(uDirect, texel, 0).rgb;
-        vec4 result = uIncrement ? vec4(previous, texelFetch(uDirect, texel, 0).a) : texelFetch(uDirect, texel, 0);
+        vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : direct.rgb;
+        vec4 result = uIncrement ? vec4(previous, direct.a) : direct;
         if (albedo.a > 0.0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
             vec3 normalSum = texelFetch(uNormal, texel, 0).xyz;
             float normalLength = length(normalSum);

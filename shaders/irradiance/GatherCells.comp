@@ -111,8 +111,11 @@ void storeNone(ivec3 cell, bool front)
 
 void storeGathered(ivec3 cell, bool front, vec4 gathered)
 {
-#ifdef WRITE_CHANGE
+#if defined(WRITE_CHANGE) || defined(CHANGE_SUMS) || defined(SHIFT_ITERATE)
+    // What the cell held before this gather, read once for all that compare with it.
     vec4 replaced = front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell);
+#endif
+#ifdef WRITE_CHANGE
     vec4 change = vec4(gathered.rgb - (replaced.a >= 0.0 ? replaced.rgb : vec3(0.0)), gathered.a);
     if (front)
         imageStore(uChange, cell, change);
@@ -120,12 +123,11 @@ void storeGathered(ivec3 cell, bool front, vec4 gathered)
         imageStore(uChangeBack, cell, change);
 #endif
 #ifdef CHANGE_SUMS
-    vec3 before = uFirstGather ? vec3(0.0) : max((front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell)).rgb, vec3(0.0));
+    vec3 before = uFirstGather ? vec3(0.0) : max(replaced.rgb, vec3(0.0));
     gChange += abs(gathered.rgb - before);
     gTotal += dot(gathered.rgb, vec3(1.0));
 #endif
 #ifdef SHIFT_ITERATE
-    vec4 replaced = front ? imageLoad(uIrradiance, cell) : imageLoad(uIrradianceBack, cell);
     vec4 iterate = front ? imageLoad(uIterate, cell) : imageLoad(uIterateBack, cell);
     // A cell the earlier voxels did not hold has no earlier first-bounce gather: the iterate's is taken against
     // this one (moved by all of it, the new gather would count twice).
