@@ -333,28 +333,37 @@ void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iterati
     const int res = v.frame.resolution;
     const int cells = res / m_cells.cellSize;
     const bool split = splitsBounces(frame);
-    m_reinject->use();
-    m_reinject->set("uGridOrigin", v.frame.origin);
-    m_reinject->set("uVoxelSize", v.frame.voxelSize());
-    m_reinject->set("uCellVoxels", m_cells.cellSize);
-    m_reinject->set("uCells", cells);
-    m_reinject->set("uCellSize", v.frame.extent / float(cells));
     const bool increment = how == Reinjection::AddHigherChange;
-    m_reinject->set("uHigherBounces", split && how != Reinjection::FirstBounceOnly ? 1 : 0);
-    m_reinject->set("uIncrement", increment ? 1 : 0);
+    const bool higherBounces = split && how != Reinjection::FirstBounceOnly && !increment;
+    std::vector<std::string> defines;
+    if (increment)
+        defines.emplace_back("INCREMENT");
+    if (higherBounces)
+        defines.emplace_back("HIGHER_BOUNCES");
+    const gl::Program& program = frame.shaders.program({ std::string("bounce reinjection")
+            + (increment            ? ", higher bounces' change added"
+                    : higherBounces ? ", higher bounces"
+                                    : ""),
+        { "bounce/ReinjectBounce.comp" }, defines });
+    program.use();
+    program.set("uGridOrigin", v.frame.origin);
+    program.set("uVoxelSize", v.frame.voxelSize());
+    program.set("uCellVoxels", m_cells.cellSize);
+    program.set("uCells", cells);
+    program.set("uCellSize", v.frame.extent / float(cells));
     if (split) {
         const int higherCells = res / m_higherCells.cellSize;
-        m_reinject->set("uHigherCellVoxels", m_higherCells.cellSize);
-        m_reinject->set("uHigherCells", higherCells);
-        m_reinject->set("uHigherCellSize", v.frame.extent / float(higherCells));
+        program.set("uHigherCellVoxels", m_higherCells.cellSize);
+        program.set("uHigherCells", higherCells);
+        program.set("uHigherCellSize", v.frame.extent / float(higherCells));
         (increment ? v.higherBounceChange : v.higherBounceIrradiance).bindUnit(3);
         (increment ? v.higherBounceChangeBack : v.higherBounceIrradianceBack).bindUnit(4);
         v.higherBounceCellNormal.bindUnit(5);
         v.higherBounceBase.bindUnit(6);
         v.higherBounceBaseBack.bindUnit(7);
     }
-    m_reinject->set("uCompare", compare ? 1 : 0);
-    m_reinject->set("uIteration", iteration);
+    program.set("uCompare", compare ? 1 : 0);
+    program.set("uIteration", iteration);
     v.albedo.bindUnit(0);
     v.normal.bindUnit(1);
     v.radiance.bindUnit(2);
@@ -433,8 +442,6 @@ bool VoxelBouncePass::redoesWholeGrid(const FrameContext& frame) const
 void VoxelBouncePass::execute(FrameContext& frame)
 {
     VoxelVolume& v = frame.voxels;
-    if (!m_reinject)
-        m_reinject = &frame.shaders.program({ "bounce reinjection", { "bounce/ReinjectBounce.comp" }, {} });
     const int res = v.frame.resolution;
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;
     const bool split = splitsBounces(frame);

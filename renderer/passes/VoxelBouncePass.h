@@ -127,7 +127,6 @@ private:
     /// (Reinjection::AddHigherChange); later ones take the whole sum again.
     static constexpr int kIncrementalIterations = 3;
 
-    const gl::Program* m_reinject = nullptr;
     CellGrid m_cells; ///< the occupied bounce cells, relisted when the voxels change
     CellGrid m_higherCells; ///< the higher bounces' cells when the solve splits them off
     VoxelMipBuilder m_builder;

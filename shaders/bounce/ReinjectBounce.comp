@@ -27,14 +27,15 @@ uniform vec3 uGridOrigin;
 uniform float uVoxelSize;
 uniform int uCellVoxels; // voxels per bounce cell side
 uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
-// The iterations after a split solve's first add to the previous iterate what its higher bounces changed by:
-// uHigher and uHigherBack then hold the last gather's change (irradiance/GatherCells.comp, WRITE_CHANGE), and
-// the sum above is unchanged but for rounding, as the lookups are linear in what the cells hold: one lookup a
-// voxel, where the whole sum takes three (the bounce cells' gather and both higher-bounce gathers).
-uniform bool uIncrement;
-// The higher bounces' cells (passes/VoxelBouncePass), when the solve splits them off: their gather of the
-// previous iterate, its cells' normals, and their gather of L_direct.
-uniform bool uHigherBounces;
+// Each way of finding the new radiance is a program of its own (passes/VoxelBouncePass::reinject): with the
+// others' lookups in the same program, left out by uniforms, each reinjection took a fifth longer on llvmpipe.
+// INCREMENT: the iterations after a split solve's first add to the previous iterate what its higher bounces
+// changed by: uHigher and uHigherBack then hold the last gather's change (irradiance/GatherCells.comp,
+// WRITE_CHANGE), and the sum above is unchanged but for rounding, as the lookups are linear in what the cells
+// hold: one lookup a voxel, where the whole sum takes three (the bounce cells' gather and both higher-bounce
+// gathers).
+// HIGHER_BOUNCES: the whole sum adds the higher bounces' cells (passes/VoxelBouncePass), when the solve splits
+// them off: their gather of the previous iterate, its cells' normals, and their gather of L_direct.
 uniform int uHigherCellVoxels;
 uniform int uHigherCells;
 uniform float uHigherCellSize; // metres
@@ -50,7 +51,7 @@ layout(binding = 7) uniform sampler3D uHigherBaseBack;
 // voxel, or two surfaces pressed together) sends the same radiance both ways, so it takes the mean of what
 // reaches its two sides: that keeps the power it reflects, where the sum would send each side's light out of
 // both sides and, two faces lighting each other, grow without bound from one iteration to the next.
-// What the cells hold is light, never below zero, unless `change` (uIncrement).
+// What the cells hold is light, never below zero, unless `change` (INCREMENT).
 vec3 ownCell(sampler3D front, sampler3D back, sampler3D normals, sampler3D minusFront, sampler3D minusBack,
     bool subtract, int cellVoxels, ivec3 voxel, vec3 n, bool faced, bool change)
 {
@@ -79,7 +80,11 @@ void main()
         vec4 direct = texelFetch(uDirect, texel, 0);
         // A cold start's previous iterate is the first-bounce light (the volume was cleared before this step).
         vec3 previous = uCompare ? imageLoad(uBounced, texel).rgb : direct.rgb;
-        vec4 result = uIncrement ? vec4(previous, direct.a) : direct;
+#ifdef INCREMENT
+        vec4 result = vec4(previous, direct.a);
+#else
+        vec4 result = direct;
+#endif
         if (albedo.a > 0.0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
             vec3 normalSum = texelFetch(uNormal, texel, 0).xyz;
             float normalLength = length(normalSum);
@@ -88,25 +93,30 @@ void main()
             vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
             vec4 looked;
             vec3 gathered;
-            if (uIncrement) {
+#if defined(INCREMENT)
+            {
                 gathered = faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false,
                                         uHigherCells, uHigherCellSize, p, n, looked)
                     ? looked.rgb
                     : ownCell(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false, uHigherCellVoxels,
                         voxel, n, faced, true);
-            } else {
+            }
+#else
+            {
                 gathered = faced && lookUpIrradiance(p, n, looked)
                     ? looked.rgb
                     : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
                         uCellVoxels, voxel, n, faced, false);
+#ifdef HIGHER_BOUNCES
                 // Rounding can take a difference of two gathers of nearly the same light below zero.
-                if (uHigherBounces)
-                    gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase,
+                gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase,
                                              uHigherBaseBack, true, uHigherCells, uHigherCellSize, p, n, looked)
                         ? max(looked.rgb, vec3(0.0))
                         : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
                             uHigherCellVoxels, voxel, n, faced, false);
+#endif
             }
+#endif
             // A change may be negative (a light dimmed); rounding must not take the sum below zero.
             result.rgb = max(result.rgb + albedo.rgb * gathered * albedo.a, vec3(0.0));
         }
