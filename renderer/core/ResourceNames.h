@@ -25,6 +25,8 @@ inline constexpr const char* kHigherBounceBase = "higher-bounce cells, first-bou
 inline constexpr const char* kHigherBounceBaseBack = "higher-bounce cells, first-bounce light, back faces";
 inline constexpr const char* kHigherBounceChange = "higher-bounce cells, last change";
 inline constexpr const char* kHigherBounceChangeBack = "higher-bounce cells, last change, back faces";
+// Each higher-bounce cell's sums of its surface voxels, added up by the bounce cells' first gather.
+inline constexpr const char* kHigherBounceCellSums = "higher-bounce cells, surface sums";
 inline constexpr const char* kBrickTable = "brick table"; // a sparse grid's (common/VoxelBricks.glsl)
 inline constexpr const char* kEnclosure = "enclosed space"; // around the scene (core/EnclosedSpace)
 inline constexpr const char* kIrradiance = "irradiance cache";

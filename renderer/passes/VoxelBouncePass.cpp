@@ -72,8 +72,8 @@ PassDeclaration VoxelBouncePass::declare() const
     return { { kAlbedo, kNormal, kEmission, kRadiance, kEnclosure },
         { kBounced, kBouncedDirectional, kBounceCells, kBounceCellsBack, kBounceCellNormals,
             kHigherBounceCells, kHigherBounceCellsBack, kHigherBounceCellNormals, kHigherBounceBase,
-            kHigherBounceBaseBack, kHigherBounceChange, kHigherBounceChangeBack, kBounceCellMarks,
-            kBounceSums } };
+            kHigherBounceBaseBack, kHigherBounceChange, kHigherBounceChangeBack, kHigherBounceCellSums,
+            kBounceCellMarks, kBounceSums } };
 }
 
 std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
@@ -116,6 +116,9 @@ std::vector<TextureSlot> VoxelBouncePass::textures(const FrameContext& frame)
         { kHigherBounceChange, ResourceGroup::Voxels, &v.higherBounceChange, ifSplit(cellDesc(higherCells)) },
         { kHigherBounceChangeBack, ResourceGroup::Voxels, &v.higherBounceChangeBack,
             ifSplit(cellDesc(higherCells)) },
+        // Seven r32ui sums per cell, in the octants of a volume of twice the cells a side (GatherCells.comp).
+        { kHigherBounceCellSums, ResourceGroup::Voxels, &m_higherCellSums,
+            ifSplit(TextureDesc::volume(GL_R32UI, 2 * higherCells).sampled(TextureDesc::Sampling::Nearest)) },
         { kBounceCellMarks, ResourceGroup::Voxels, &m_builder.marks(),
             ifUsed(VoxelMipBuilder::marksDesc(res)) },
         { kBounceSums, ResourceGroup::PassState, &m_sums,
@@ -179,6 +182,22 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
         defines.emplace_back("CACHED_GEOMETRY");
         name += ", cell geometry known";
     }
+    // The bounce cells' first gather over these voxels sums their surface into the higher bounces' cells,
+    // which then read those sums instead of their voxels (GatherCells.comp).
+    const bool parentSums = &grid == &m_cells && !grid.geometryKnown && m_higherCells.cellSize > grid.cellSize
+        && m_higherCellSums && m_higherCells.list;
+    const bool childSums = &grid == &m_higherCells && m_cellSumsReady;
+    if (parentSums) {
+        defines.emplace_back("PARENT_SUMS");
+        name += ", parents' sums";
+        const GLuint zero[4] = { 0, 0, 0, 0 };
+        glClearTexImage(m_higherCellSums.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, zero);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    }
+    if (childSums) {
+        defines.emplace_back("CHILD_SUMS");
+        name += ", from the bounce cells' sums";
+    }
     if (sums) {
         defines.emplace_back("CHANGE_SUMS");
         name += ", change sums";
@@ -202,6 +221,12 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
             gather, frame, anisotropic, grid.cellSize, false, front, back, normals);
         if (geometryKnown)
             normals.bindUnit(2);
+        if (parentSums) {
+            m_higherCellSums.bindImage(4, 0, GL_READ_WRITE);
+            gather.set("uParentRatio", m_higherCells.cellSize / grid.cellSize);
+        }
+        if (childSums)
+            m_higherCellSums.bindUnit(4);
         if (fromFirstBounce && anisotropic) // its level 0 (startFromFirstBounce)
             v.radiance.bindUnit(5);
         if (sums) {
@@ -243,6 +268,7 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ConeTracingSetup::bindVolumeSampler(frame, 0);
     grid.geometryKnown = true;
+    m_cellSumsReady = m_cellSumsReady || parentSums;
 }
 
 void VoxelBouncePass::iterate(FrameContext& frame, bool compare, int iteration)
@@ -288,9 +314,10 @@ void VoxelBouncePass::iterateSplit(FrameContext& frame, bool compare, bool first
     }
     // A cold start's change is what the first gather found, as in iterate(), at the higher bounces' scale
     // that every later change of this solve is measured at.
+    // The bounce cells first: their first gather over these voxels sums the higher cells' surfaces.
+    gather(frame, m_cells, v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal, true, -1, true);
     gather(frame, m_higherCells, v.higherBounceBase, v.higherBounceBaseBack, v.higherBounceCellNormal, true,
         compare ? -1 : sums, true, compare && m_baseInPlace ? GatherExtra::ShiftIterate : GatherExtra::None);
-    gather(frame, m_cells, v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal, true, -1, true);
     if (!compare) {
         // The first iterate is the first-bounce light itself: its gather is the base's.
         const int n = v.higherBounceBase.width();
@@ -464,6 +491,7 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_listedMaterials = v.materialsVersion;
         m_cells.geometryKnown = false;
         m_higherCells.cellSize = 0;
+        m_cellSumsReady = false;
     }
     if (split
         && (m_higherCells.cellSize != frame.settings.higherBounceCellVoxels(res)
@@ -480,6 +508,9 @@ void VoxelBouncePass::execute(FrameContext& frame)
         m_higherCells.cellSize = frame.settings.higherBounceCellVoxels(res);
         m_higherCells.list = &m_builder.cellsOfSize(m_higherCells.cellSize);
         m_higherCells.geometryKnown = false;
+        // Summed for other cells, or not yet: the higher cells read their voxels until the bounce cells' next
+        // first gather.
+        m_cellSumsReady = false;
     }
     // An interactive view starts a new solve from the last one, so that a light edit brightens or dims the
     // bounces smoothly instead of starting again from one bounce; and so does a change of voxels in the same

@@ -153,6 +153,10 @@ private:
     VoxelGridFrame m_grid; ///< where the grid was for the last solve
     bool m_coldSolve = false; ///< the current split solve started from the first-bounce light alone
     bool m_baseInPlace = false; ///< the grid has not moved since the higher-bounce base was gathered
+    /// Each higher-bounce cell's sums of its surface voxels (normals, positions, count; GatherCells.comp),
+    /// added up by the bounce cells' first gather over the voxels.
+    gl::Texture m_higherCellSums;
+    bool m_cellSumsReady = false; ///< m_higherCellSums holds the sums of the current cells
 };
 
 } // namespace vct::render

@@ -69,7 +69,7 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
         textures.push_back({ "bounce cells, back faces", chain(cells, 8, false) });
         textures.push_back({ "bounce cell normals", chain(cells, 4, false) });
         // The higher bounces' coarser cells (VoxelBouncePass::splitsBounces): six rgba16f, the normal rgba8
-        // snorm.
+        // snorm, and their surfaces' sums.
         const std::uint64_t higherCells = n / std::uint64_t(settings.higherBounceCellVoxels(int(n)));
         if (settings.splitsHigherBounces(int(n))) {
             textures.push_back({ "higher-bounce cells", chain(higherCells, 8, false) });
@@ -81,6 +81,8 @@ std::vector<VoxelTextureEstimate> VoxelTextureEstimate::of(
             textures.push_back({ "higher-bounce cells, last change", chain(higherCells, 8, false) });
             textures.push_back(
                 { "higher-bounce cells, last change, back faces", chain(higherCells, 8, false) });
+            // Seven r32ui sums per cell, in a volume of twice the cells a side.
+            textures.push_back({ "higher-bounce cells, surface sums", chain(2 * higherCells, 4, false) });
         }
     }
     // Each coarser level of a clipmap is a grid like the finest, named as Renderer::describeVoxelMemory

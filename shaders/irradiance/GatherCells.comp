@@ -77,12 +77,41 @@ uniform int uOne;          // 1
 
 const vec4 kNone = vec4(0.0, 0.0, 0.0, -1.0);
 
+// A cell's sums of its surface voxels (passes/VoxelBouncePass), as integers so that the order of the atomic adds
+// does not matter: its voxels' normals (times kNormalScale), their positions (times 2: a voxel's centre is
+// voxel + 0.5), and how many there are. Seven texels of one r32ui volume of twice the cells a side, one octant
+// each; negative sums wrap around as two's complement and read back as ints.
+#if defined(PARENT_SUMS) || defined(CHILD_SUMS)
+const float kNormalScale = 1024.0;
+ivec3 sumsTexel(ivec3 cell, int which, int cellsPerSide)
+{
+    return cell + cellsPerSide * ivec3(which & 1, (which >> 1) & 1, which >> 2);
+}
+#endif
+#ifdef PARENT_SUMS
+// The bounce cells' first gather over these voxels adds each cell's sums to its cell of the higher bounces'
+// grid, uParentRatio of its cells a side, so that the higher cells' gathers find their normal, sides and
+// centre from eight sums instead of reading each of their voxels (CHILD_SUMS).
+layout(r32ui, binding = 4) uniform uimage3D uParentSums;
+uniform int uParentRatio;
+#endif
+#ifdef CHILD_SUMS
+layout(binding = 4) uniform usampler3D uCellSums; // written by the bounce cells' gather (PARENT_SUMS)
+int cellSum(ivec3 cell, int which)
+{
+    return int(texelFetch(uCellSums, sumsTexel(cell, which, uResolution / uCellSize), 0).r);
+}
+#endif
+
 // The share of occupied voxels in the cell `offset` cells away; 1 outside the grid (nothing to gather there).
 float cellOccupancy(ivec3 cell, ivec3 offset)
 {
     ivec3 first = (cell + offset) * uCellSize;
     if (any(lessThan(first, ivec3(0))) || any(greaterThanEqual(first, ivec3(uResolution))))
         return 1.0;
+#ifdef CHILD_SUMS
+    return float(cellSum(cell + offset, 6)) / float(uCellSize * uCellSize * uCellSize);
+#endif
     float occupied = 0.0;
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
@@ -156,6 +185,10 @@ void gatherCell(ivec3 cell)
         storeNone(cell, false);
         return;
     }
+#ifdef CHILD_SUMS
+    positionSum = 0.5 * vec3(cellSum(cell, 3), cellSum(cell, 4), cellSum(cell, 5));
+    occupied = float(cellSum(cell, 6));
+#else
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
             for (int x = 0; x < uCellSize; ++x) {
@@ -164,9 +197,15 @@ void gatherCell(ivec3 cell)
                 positionSum += occupancy * (vec3(voxel) + 0.5);
                 occupied += occupancy;
             }
+#endif
     vec3 centre = uGridOrigin + positionSum / occupied * uVoxelSize;
     bool twoSided = geometry.w > 0.75;
     vec3 n = normalize(geometry.xyz);
+#else
+#ifdef CHILD_SUMS
+    normalSum = vec3(cellSum(cell, 0), cellSum(cell, 1), cellSum(cell, 2)) / kNormalScale;
+    positionSum = 0.5 * vec3(cellSum(cell, 3), cellSum(cell, 4), cellSum(cell, 5));
+    occupied = float(cellSum(cell, 6));
 #else
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
@@ -181,6 +220,20 @@ void gatherCell(ivec3 cell)
                 positionSum += vec3(voxel) + 0.5;
                 occupied += 1.0;
             }
+#endif
+#ifdef PARENT_SUMS
+    if (occupied > 0.0) {
+        ivec3 parent = cell / uParentRatio;
+        int parents = uResolution / (uCellSize * uParentRatio);
+        ivec3 normalFixed = ivec3(round(normalSum * kNormalScale));
+        ivec3 positionTwice = ivec3(round(positionSum * 2.0));
+        for (int i = 0; i < 3; ++i) {
+            imageAtomicAdd(uParentSums, sumsTexel(parent, i, parents), uint(normalFixed[i]));
+            imageAtomicAdd(uParentSums, sumsTexel(parent, 3 + i, parents), uint(positionTwice[i]));
+        }
+        imageAtomicAdd(uParentSums, sumsTexel(parent, 6, parents), uint(occupied));
+    }
+#endif
     if (occupied == 0.0) {
         storeNone(cell, true);
         storeNone(cell, false);
