@@ -200,11 +200,7 @@ bool VoxelizePass::redoesWholeGrid(const FrameContext& frame) const
 
 void VoxelizePass::ensureResources(FrameContext& frame)
 {
-    if (!m_voxelize) {
-        const std::vector<std::string> stages { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom",
-            "voxelize/Voxelize.frag" };
-        m_voxelize = &frame.shaders.program({ "voxelize", stages, {} });
-        m_voxelizeEmissive = &frame.shaders.program({ "voxelize (emissive)", stages, { "EMISSIVE" } });
+    if (!m_resolve) {
         m_resolve = &frame.shaders.program({ "voxel resolve", { "voxelize/Resolve.comp" }, {} });
     }
     VoxelVolume& v = frame.voxels;
@@ -262,19 +258,18 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
         v.frame.origin + glm::vec3(region.hi + 2) * voxel };
     const Frustum regionBox = Frustum::ofBox(reach);
     const LatticePlacement lattice = latticeOf(frame);
+    // With hardware conservative raster the geometry shader need not enlarge triangles itself.
+    const bool conservative = frame.settings.conservativeVoxelization && !nvConservative;
     for (const bool emissive : { false, true }) {
-        const gl::Program& program = emissive ? *m_voxelizeEmissive : *m_voxelize;
+        const gl::Program& program = voxelizer(frame, emissive, conservative);
         program.use();
         program.set("uLatticeOrigin", lattice.origin);
         program.set("uLatticeOffset", lattice.offset);
         program.set("uVoxelSize", voxel);
         program.set("uResolution", res);
-        program.set("uEmissionVolume", v.emission ? 1 : 0);
         program.set("uRegionLo", region.lo);
         program.set("uRegionHi", region.hi);
         program.set("uGroupSize", OccupiedCellList::kGroupSize);
-        // With hardware conservative raster the geometry shader need not enlarge triangles itself.
-        program.set("uConservative", frame.settings.conservativeVoxelization && !nvConservative ? 1 : 0);
         DrawOptions options;
         options.layer = layer;
         options.materials = [emissive](const Material& m) { return m.isEmissive() == emissive; };
@@ -288,6 +283,29 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(
         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, bool emissive, bool conservative)
+{
+    // What a frame leaves out is a define, not a uniform: with the emission volume's compare-and-swap and the
+    // conservative tests in every variant, chosen by uniforms, the atrium's voxelization took about a tenth
+    // longer on llvmpipe (docs/BENCHMARKS.md).
+    std::vector<std::string> defines;
+    std::string name = "voxelize";
+    if (emissive) {
+        defines.emplace_back("EMISSIVE");
+        name += " (emissive)";
+    }
+    if (frame.voxels.emission) {
+        defines.emplace_back("EMISSION_VOLUME");
+        name += ", emission volume";
+    }
+    if (conservative) {
+        defines.emplace_back("CONSERVATIVE");
+        name += ", conservative";
+    }
+    return frame.shaders.program(
+        { name, { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag" }, defines });
 }
 
 void VoxelizePass::resolve(FrameContext& frame, const OccupiedCellList& touched)

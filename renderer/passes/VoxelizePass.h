@@ -52,9 +52,12 @@ private:
     /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
     void resolve(FrameContext& frame, const OccupiedCellList& touched);
 
-    const gl::Program* m_voxelize = nullptr;
-    const gl::Program* m_voxelizeEmissive
-        = nullptr; ///< the EMISSIVE variant, for meshes whose material emits
+    /**
+     * The voxelizer's program for meshes whose material emits (@p emissive) or not, into a grid with an
+     * emission volume or without, enlarging triangles in the geometry shader (@p conservative) or not.
+     */
+    static const gl::Program& voxelizer(FrameContext& frame, bool emissive, bool conservative);
+
     const gl::Program* m_resolve = nullptr;
     OccupiedCellList m_regionStaticVoxels; ///< the static voxels a partial update redid
     OccupiedCellList m_movedStaticVoxels; ///< the static list before a step, read while it is moved

@@ -2,8 +2,10 @@
 // overlapping fragments, static and dynamic alike, average instead of the last one winning. The fragment whose
 // update finds a voxel empty lists it (core/OccupiedCellList) for the resolve and, after a full rebuild, for
 // light injection: no pass has to search the grid for the voxels drawn.
-// EMISSIVE: the variant for emissive materials (passes/VoxelizePass). Other materials leave the emission word
-// alone unless it holds light, so most fragments skip its compare-and-swap.
+// Variants (passes/VoxelizePass::voxelizer): EMISSIVE for emissive materials (other materials leave the emission
+// word alone unless it holds light, so most fragments skip its compare-and-swap); EMISSION_VOLUME when the scene
+// has emissive materials (passes/VoxelizePass::ensureEmission), so that the grid has an emission word at all;
+// CONSERVATIVE when the geometry shader enlarged the triangle (clipped here to its pixel bounds).
 #include "common/VoxelWords.glsl"
 #include "common/AppendCell.glsl"
 #include "common/VoxelBricks.glsl"
@@ -16,7 +18,6 @@ flat in float gDepthSlope;
 noperspective in float gDepth;
 
 uniform int uResolution;
-uniform bool uConservative;
 uniform vec3 uAlbedo;
 #ifdef EMISSIVE
 uniform vec3 uEmission;
@@ -25,7 +26,6 @@ layout(binding = 0) uniform sampler2D uAlbedoTexture;
 layout(r32ui, binding = 0) uniform coherent uimage3D uAlbedoWords;
 layout(r32ui, binding = 1) uniform coherent uimage3D uNormalWords;
 layout(r32ui, binding = 2) uniform coherent uimage3D uEmissionWords;
-uniform bool uEmissionVolume; // the scene has emissive materials (passes/VoxelizePass::ensureEmission)
 uniform ivec3 uRegionLo; // voxels outside [lo, hi) are being kept
 uniform ivec3 uRegionHi;
 
@@ -86,10 +86,14 @@ void addEmission(ivec3 voxel, vec3 emission, int before)
 
 void main()
 {
-    if (uConservative
-        && (gl_FragCoord.x < gPixelBounds.x || gl_FragCoord.y < gPixelBounds.y || gl_FragCoord.x > gPixelBounds.z
-            || gl_FragCoord.y > gPixelBounds.w))
+#ifdef CONSERVATIVE
+    if (gl_FragCoord.x < gPixelBounds.x || gl_FragCoord.y < gPixelBounds.y || gl_FragCoord.x > gPixelBounds.z
+        || gl_FragCoord.y > gPixelBounds.w)
         discard;
+    float spread = gDepthSlope;
+#else
+    float spread = 0.0;
+#endif
     vec3 albedo = uAlbedo * texture(uAlbedoTexture, gUv).rgb;
     vec3 normal = gNormal;
     float len = length(normal);
@@ -101,7 +105,6 @@ void main()
 #endif
 
     float depth = gDepth;
-    float spread = uConservative ? gDepthSlope : 0.0;
     int first = max(int(floor(depth - spread)), 0);
     int last = min(int(floor(depth + spread)), uResolution - 1);
     for (int z = first; z <= last; ++z) {
@@ -119,7 +122,8 @@ void main()
         if (before == 0)
             appendCell(voxel);
         addNormal(texel, normal);
-        if (uEmissionVolume)
-            addEmission(texel, emission, before);
+#ifdef EMISSION_VOLUME
+        addEmission(texel, emission, before);
+#endif
     }
 }

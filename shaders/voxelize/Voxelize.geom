@@ -10,7 +10,6 @@ in vec3 vNormal[];
 in vec2 vUv[];
 
 uniform int uResolution;
-uniform bool uConservative;
 uniform ivec3 uRegionLo; // only voxels in [lo, hi) are being redone
 uniform ivec3 uRegionHi;
 
@@ -56,7 +55,8 @@ void main()
     gPixelBounds = vec4((lo * 0.5 + 0.5) * float(uResolution), (hi * 0.5 + 0.5) * float(uResolution));
 
     vec2 q[3] = vec2[3](p[0].xy, p[1].xy, p[2].xy);
-    if (uConservative) {
+#ifdef CONSERVATIVE // (passes/VoxelizePass::voxelizer)
+    {
         float orientation = n.z > 0.0 ? 1.0 : -1.0;
         vec3 lines[3];
         for (int i = 0; i < 3; ++i) {
@@ -77,6 +77,7 @@ void main()
             q[i] = p[i].xy + offset;
         }
     }
+#endif
     for (int i = 0; i < 3; ++i) {
         float z = p[0].z + slope.x * (q[i].x - p[0].x) + slope.y * (q[i].y - p[0].y);
         gl_Position = vec4(q[i], z, 1.0);
