@@ -312,10 +312,10 @@ void VoxelBouncePass::iterateSplit(FrameContext& frame, bool compare, bool first
             v.higherBounceCellNormal, false, sums, false);
         startFromFirstBounce(frame);
     }
-    // A cold start's change is what the first gather found, as in iterate(), at the higher bounces' scale
-    // that every later change of this solve is measured at.
     // The bounce cells first: their first gather over these voxels sums the higher cells' surfaces.
     gather(frame, m_cells, v.bounceIrradiance, v.bounceIrradianceBack, v.bounceCellNormal, true, -1, true);
+    // A cold start's change is what the first gather found, as in iterate(), at the higher bounces' scale
+    // that every later change of this solve is measured at.
     gather(frame, m_higherCells, v.higherBounceBase, v.higherBounceBaseBack, v.higherBounceCellNormal, true,
         compare ? -1 : sums, true, compare && m_baseInPlace ? GatherExtra::ShiftIterate : GatherExtra::None);
     if (!compare) {

@@ -288,8 +288,8 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
 const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, bool emissive, bool conservative)
 {
     // What a frame leaves out is a define, not a uniform: with the emission volume's compare-and-swap and the
-    // conservative tests in every variant, chosen by uniforms, the atrium's voxelization took about a tenth
-    // longer on llvmpipe (docs/BENCHMARKS.md).
+    // conservative tests in every variant, chosen by uniforms, the atrium's voxelization took about a fifth
+    // longer on llvmpipe in three pairs of four (docs/BENCHMARKS.md).
     std::vector<std::string> defines;
     std::string name = "voxelize";
     if (emissive) {

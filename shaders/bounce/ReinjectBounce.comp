@@ -93,29 +93,25 @@ void main()
             vec3 p = uGridOrigin + (vec3(voxel) + 0.5) * uVoxelSize;
             vec4 looked;
             vec3 gathered;
-#if defined(INCREMENT)
-            {
-                gathered = faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false,
-                                        uHigherCells, uHigherCellSize, p, n, looked)
-                    ? looked.rgb
-                    : ownCell(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false, uHigherCellVoxels,
-                        voxel, n, faced, true);
-            }
+#ifdef INCREMENT
+            gathered = faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false,
+                                    uHigherCells, uHigherCellSize, p, n, looked)
+                ? looked.rgb
+                : ownCell(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false, uHigherCellVoxels, voxel,
+                    n, faced, true);
 #else
-            {
-                gathered = faced && lookUpIrradiance(p, n, looked)
-                    ? looked.rgb
-                    : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
-                        uCellVoxels, voxel, n, faced, false);
+            gathered = faced && lookUpIrradiance(p, n, looked)
+                ? looked.rgb
+                : ownCell(uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false,
+                    uCellVoxels, voxel, n, faced, false);
 #ifdef HIGHER_BOUNCES
-                // Rounding can take a difference of two gathers of nearly the same light below zero.
-                gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase,
-                                             uHigherBaseBack, true, uHigherCells, uHigherCellSize, p, n, looked)
-                        ? max(looked.rgb, vec3(0.0))
-                        : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
-                            uHigherCellVoxels, voxel, n, faced, false);
+            // Rounding can take a difference of two gathers of nearly the same light below zero.
+            gathered += faced && lookUpCells(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true,
+                                     uHigherCells, uHigherCellSize, p, n, looked)
+                ? max(looked.rgb, vec3(0.0))
+                : ownCell(uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true, uHigherCellVoxels,
+                    voxel, n, faced, false);
 #endif
-            }
 #endif
             // A change may be negative (a light dimmed); rounding must not take the sum below zero.
             result.rgb = max(result.rgb + albedo.rgb * gathered * albedo.a, vec3(0.0));
