@@ -55,7 +55,7 @@ public:
     std::vector<std::uint8_t> texels() const;
 
 private:
-    enum Cell : std::uint8_t { Empty, Occupied, Open, Enclosed };
+    enum Cell : std::uint8_t { Empty, Occupied, Enclosed }; ///< after solve(), open cells stay Empty
     std::size_t indexOf(const glm::ivec3& cell) const;
     /** The cell's state, nothing outside the grid. */
     std::optional<std::uint8_t> stateOf(const glm::ivec3& cell) const;
