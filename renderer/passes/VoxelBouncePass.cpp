@@ -185,7 +185,7 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     // The bounce cells' first gather over these voxels sums their surface into the higher bounces' cells,
     // which then read those sums instead of their voxels (GatherCells.comp).
     const bool parentSums = &grid == &m_cells && !grid.geometryKnown && m_higherCells.cellSize > grid.cellSize
-        && m_higherCellSums && m_higherCells.list;
+        && m_higherCellSums;
     const bool childSums = &grid == &m_higherCells && m_cellSumsReady;
     if (parentSums) {
         defines.emplace_back("PARENT_SUMS");

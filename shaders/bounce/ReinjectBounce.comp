@@ -28,7 +28,8 @@ uniform float uVoxelSize;
 uniform int uCellVoxels; // voxels per bounce cell side
 uniform bool uCompare;   // the previous iterate is in uBounced (else it was just cleared)
 // Each way of finding the new radiance is a program of its own (passes/VoxelBouncePass::reinject): with the
-// others' lookups in the same program, left out by uniforms, each reinjection took a fifth longer on llvmpipe.
+// others' lookups in the same program, left out by uniforms, each reinjection took about a third longer on
+// llvmpipe (docs/BENCHMARKS.md).
 // INCREMENT: the iterations after a split solve's first add to the previous iterate what its higher bounces
 // changed by: uHigher and uHigherBack then hold the last gather's change (irradiance/GatherCells.comp,
 // WRITE_CHANGE), and the sum above is unchanged but for rounding, as the lookups are linear in what the cells

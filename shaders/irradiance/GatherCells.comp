@@ -101,6 +101,14 @@ int cellSum(ivec3 cell, int which)
 {
     return int(texelFetch(uCellSums, sumsTexel(cell, which, uResolution / uCellSize), 0).r);
 }
+
+// What the loops over a cell's voxels below would sum, from the bounce cells' sums.
+void readCellSums(ivec3 cell, out vec3 normalSum, out vec3 positionSum, out float occupied)
+{
+    normalSum = vec3(cellSum(cell, 0), cellSum(cell, 1), cellSum(cell, 2)) / kNormalScale;
+    positionSum = 0.5 * vec3(cellSum(cell, 3), cellSum(cell, 4), cellSum(cell, 5));
+    occupied = float(cellSum(cell, 6));
+}
 #endif
 
 // The share of occupied voxels in the cell `offset` cells away; 1 outside the grid (nothing to gather there).
@@ -186,8 +194,7 @@ void gatherCell(ivec3 cell)
         return;
     }
 #ifdef CHILD_SUMS
-    positionSum = 0.5 * vec3(cellSum(cell, 3), cellSum(cell, 4), cellSum(cell, 5));
-    occupied = float(cellSum(cell, 6));
+    readCellSums(cell, normalSum, positionSum, occupied);
 #else
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
@@ -203,9 +210,7 @@ void gatherCell(ivec3 cell)
     vec3 n = normalize(geometry.xyz);
 #else
 #ifdef CHILD_SUMS
-    normalSum = vec3(cellSum(cell, 0), cellSum(cell, 1), cellSum(cell, 2)) / kNormalScale;
-    positionSum = 0.5 * vec3(cellSum(cell, 3), cellSum(cell, 4), cellSum(cell, 5));
-    occupied = float(cellSum(cell, 6));
+    readCellSums(cell, normalSum, positionSum, occupied);
 #else
     for (int z = 0; z < uCellSize; ++z)
         for (int y = 0; y < uCellSize; ++y)
