@@ -215,14 +215,17 @@ void RenderPlanTest::movedRectLightKeepsVoxelsAndShadowMaps()
     expectAction("area-light shadows", "skipped");
 }
 
+// Twice: the first move after a forced frame draws the static casters' own shadow maps again, the second only
+// copies the ones the first drew (passes/ShadowMapPass), and what it shows must still match a forced frame.
 void RenderPlanTest::movedDynamicObjectRedoesOnlyItsLayer()
 {
-    m_gl.renderer->setMeshTransform(
-        std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), glm::vec3(-0.2f, 0.0f, 0.1f)));
-    planned();
-    expectAction("voxelize", "run");
-    QVERIFY(pass("voxelize").reason.find("dynamic") != std::string::npos);
-    expectAction("shadow maps", "run"); // its shadow moved too
+    for (const glm::vec3 offset : { glm::vec3(-0.1f, 0.0f, 0.05f), glm::vec3(-0.2f, 0.0f, 0.1f) }) {
+        m_gl.renderer->setMeshTransform(std::size_t(m_dynamicMesh), glm::translate(glm::mat4(1.0f), offset));
+        planned();
+        expectAction("voxelize", "run");
+        QVERIFY(pass("voxelize").reason.find("dynamic") != std::string::npos);
+        expectAction("shadow maps", "run"); // its shadow moved too
+    }
     expectSameAsForced("moved dynamic object");
 }
 
