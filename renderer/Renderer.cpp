@@ -66,6 +66,7 @@ struct Renderer::State {
     std::unique_ptr<ConeSampleCounter> coneSampleCounter; ///< only while a benchmark counts cone fetches
     std::uint64_t coneSamples = 0; ///< counted in the last frame
     int bounceIterationsPerFrame = 0;
+    bool phaseTimes = false;
 
     /** Grid @p grid (Renderer::gridCount(), clamped): 0 the frame's own voxels, k clip level k. */
     VoxelVolume& volumeOf(int grid)
@@ -481,6 +482,7 @@ FrameStats Renderer::renderFrame(const Camera& camera, int width, int height)
         FrameShape {}, &st.pipeline->resources(), sceneGrid, {}, &st.enclosure };
     for (const ClipLevelPass* level : st.clipLevels)
         frame.coarserLevels.push_back(&level->volume());
+    frame.phaseTimes = st.phaseTimes;
     frame.shape = FrameShape::of(frame);
 
     if (st.coneSampleCounter)
@@ -624,6 +626,11 @@ void Renderer::applyPipelineModes()
 void Renderer::setBounceIterationsPerFrame(int iterations)
 {
     m_state->bounceIterationsPerFrame = std::max(0, iterations);
+}
+
+void Renderer::setPhaseTimes(bool on)
+{
+    m_state->phaseTimes = on;
 }
 
 std::vector<NonFiniteCount> Renderer::countNonFinite()

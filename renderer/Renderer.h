@@ -100,6 +100,12 @@ public:
      */
     void setBounceIterationsPerFrame(int iterations);
     /**
+     * Adds the phases of the passes that time them (the bounce solve's gathers, reinjections and filterings)
+     * to FrameStats::passes, after every pass's own line ("bounces: reinjections"; each a part of its pass's
+     * time). Reading them waits for the GPU to finish the pass: off (the default) for an interactive view.
+     */
+    void setPhaseTimes(bool on);
+    /**
      * Splits a full rebuild over frames: voxelizing the whole grid and injecting its light run in frames of
      * their own, while the last complete image is shown (FrameStats::deferred; an interactive host renders
      * again until it is false). Off (the default): every frame is a complete image.

@@ -171,6 +171,8 @@ int PerfCommand::run(int argc, char** argv)
     std::vector<PerfResult> results;
     try {
         render::Renderer renderer(context->procAddressFunction());
+        // Each pass's phases as rows of their own (the bounce solve's gathers, reinjections, filterings).
+        renderer.setPhaseTimes(true);
         PerfBenchmark benchmark(renderer, scene, settings, options.frames);
         for (const PerfConfig& config : PerfBenchmark::configurations(options)) {
             results.push_back(benchmark.measure(config));

@@ -335,6 +335,8 @@ int RenderCommand::run(int argc, char** argv)
         render::Renderer renderer(context->procAddressFunction());
         renderer.setSettings(settings);
         renderer.setScene(scene);
+        // The stats say where the bounce solve's time went; a run without them does not wait for it.
+        renderer.setPhaseTimes(parser.isSet(statsOption));
         for (int i = 0; i < frames; ++i) {
             if (i > 0)
                 renderer.invalidate();

@@ -48,6 +48,7 @@ void ClipLevelPass::execute(FrameContext& frame)
         frame.projection, frame.pixelToRay, nullptr, frame.bounceIterationsPerFrame, FrameShape {},
         &m_pipeline->resources(), frame.sceneGrid, m_coarser };
     level.enclosure = frame.enclosure;
+    level.phaseTimes = frame.phaseTimes;
     level.shape = FrameShape::of(level);
     m_lastStats = m_pipeline->execute(level);
 }

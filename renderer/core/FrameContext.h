@@ -74,6 +74,8 @@ struct FrameContext {
     /// The space no light can leave (EnclosurePass fills it, the diffuse gathers read it); null in contexts
     /// without one, where gathers scale nothing.
     EnclosureMap* enclosure = nullptr;
+    /// Passes that time their phases (core/PhaseTimes) report them (Renderer::setPhaseTimes).
+    bool phaseTimes = false;
 };
 
 } // namespace vct::render

@@ -96,8 +96,13 @@ FrameStats Pipeline::execute(FrameContext& frame)
             stats.totalGpuMs += stats.passes[i].gpuMs;
         }
     stats.timesFromPreviousFrame = previous;
-    // After the timings, which are indexed by pass.
+    // After the timings, which are indexed by pass: the nested passes' and the phases of those that time them
+    // (core/PhaseTimes), which are parts of their pass's time, not added to the frame's again.
     stats.passes.insert(stats.passes.end(), nestedStats.begin(), nestedStats.end());
+    for (std::size_t i = 0; i < m_passes.size(); ++i)
+        if (ran[i])
+            for (const PassStats& phase : m_passes[i]->nestedStats())
+                stats.passes.push_back(phase);
     if (previous) {
         m_ranLastFrame = ran;
         m_currentSet = 1 - m_currentSet;

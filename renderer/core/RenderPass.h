@@ -73,6 +73,10 @@ public:
      */
     virtual bool timedByPipeline() const { return true; }
     virtual double gpuMsOfLastRun() const { return 0.0; }
+    /**
+     * A pass of its own passes: theirs. A pass timed by the pipeline: the phases of the run it just made, if
+     * it times them (core/PhaseTimes), appended after every pass's own line and part of its time.
+     */
     virtual std::vector<PassStats> nestedStats() const { return {}; }
 };
 

@@ -12,9 +12,16 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace vct::render {
+
+namespace {
+
+const char* const kFilterPhase = "filterings into the mip chains";
+
+} // namespace
 
 VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
 {
@@ -133,6 +140,12 @@ void VoxelBouncePass::release(FrameContext& frame)
 
 void VoxelBouncePass::buildMips(FrameContext& frame)
 {
+    const PhaseTimes::Scope timed = m_phases.time(kFilterPhase);
+    filterMips(frame);
+}
+
+void VoxelBouncePass::filterMips(FrameContext& frame)
+{
     VoxelVolume& v = frame.voxels;
     if (frame.settings.anisotropicMips)
         m_builder.buildDirectional(frame.shaders, v.bounced,
@@ -149,6 +162,7 @@ void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
     // is copied into the bounced volume and filtered there.
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
+    const PhaseTimes::Scope timed = m_phases.time(kFilterPhase);
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     if (frame.settings.anisotropicMips) {
         m_builder.buildDirectional(frame.shaders, v.radiance,
@@ -158,13 +172,15 @@ void VoxelBouncePass::startFromFirstBounce(FrameContext& frame)
     glCopyImageSubData(
         v.radiance.id(), GL_TEXTURE_3D, 0, 0, 0, 0, v.bounced.id(), GL_TEXTURE_3D, 0, 0, 0, 0, res, res, res);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    buildMips(frame);
+    filterMips(frame);
 }
 
 void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Texture& front,
     const gl::Texture& back, const gl::Texture& normals, bool fromFirstBounce, int sumsIteration,
     bool firstGather, GatherExtra extra)
 {
+    const PhaseTimes::Scope timed = m_phases.time(
+        &grid == &m_cells ? "gathers on the bounce cells" : "gathers on the higher-bounce cells");
     const bool shiftIterate = extra == GatherExtra::ShiftIterate;
     const bool writeChange = extra == GatherExtra::WriteChange;
     // The irradiance cache's shader, over every occupied cell. Its first run on these voxels finds each
@@ -335,6 +351,7 @@ void VoxelBouncePass::iterateSplit(FrameContext& frame, bool compare, bool first
 void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iteration)
 {
     VoxelVolume& v = frame.voxels;
+    std::optional<PhaseTimes::Scope> timed(m_phases.time("reinjections"));
     if (frame.settings.bounces == RenderSettings::kConvergedBounces) {
         const gl::Program& decide
             = frame.shaders.program({ "bounce tail decision", { "bounce/DecideTail.comp" }, {} });
@@ -403,6 +420,7 @@ void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iterati
         voxels->dispatchOverCells();
     glMemoryBarrier(
         GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    timed.reset();
     buildMips(frame);
 }
 
@@ -468,6 +486,7 @@ bool VoxelBouncePass::redoesWholeGrid(const FrameContext& frame) const
 
 void VoxelBouncePass::execute(FrameContext& frame)
 {
+    m_phases.start(frame.phaseTimes);
     VoxelVolume& v = frame.voxels;
     const int res = v.frame.resolution;
     const bool converging = frame.settings.bounces == RenderSettings::kConvergedBounces;

@@ -3,6 +3,7 @@
 #include "core/BackSideCells.h"
 #include "core/ConeTraceKey.h"
 #include "core/OccupiedCellList.h"
+#include "core/PhaseTimes.h"
 #include "core/RenderPass.h"
 #include "core/VoxelMipBuilder.h"
 #include "gl/Program.h"
@@ -46,6 +47,8 @@ public:
     bool redoesWholeGrid(const FrameContext& frame) const override;
     void release(FrameContext& frame) override;
     void invalidate() override { m_radianceVersion = 0; }
+    /** The solve's gathers, reinjections and filterings in the frame's run, when the frame asks for them. */
+    std::vector<PassStats> nestedStats() const override { return m_phases.read(name()); }
 
 private:
     /** Everything the iteration depends on besides the first-bounce radiance itself. */
@@ -65,7 +68,9 @@ private:
     static bool splitsBounces(const FrameContext& frame);
     /** Makes the first-bounce light the current iterate: the levels cones read filtered from it. */
     void startFromFirstBounce(FrameContext& frame);
+    /** Filters the iterate into the levels cones read, timed as a phase; filterMips() untimed. */
     void buildMips(FrameContext& frame);
+    void filterMips(FrameContext& frame);
     /** The occupied cells of one size, and whether their normals and sides were found already. */
     struct CellGrid {
         const OccupiedCellList* list = nullptr; ///< the mip builder's list of cells of this size
@@ -133,6 +138,7 @@ private:
     gl::Sampler m_nearestLevel; ///< the gathers' filtering of the volumes they trace (gather())
     gl::Texture m_sums; ///< r32f, one row laid out by bounce/BounceSums.glsl
     BackSideCells m_backSides; ///< the two-sided cells of the gather running, whose back sides go apart
+    PhaseTimes m_phases;
     std::uint64_t m_brickLayout = 0; ///< VoxelVolume::brickLayout when the cells were found
     std::uint64_t m_bouncedSerial = 0; ///< the textures m_cells and the builder's lists were found for
     std::uint64_t m_cellsSerial = 0;

@@ -8,6 +8,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <map>
+#include <string>
+
 #include <QtTest>
 
 using namespace vct;
@@ -42,6 +45,7 @@ private slots:
     void timesCanComeFromThePreviousFrame();
     void renamesChangeNothingTheRendererHas();
     void stagedRebuildSplitsOnlyFullRebuilds();
+    void bounceSolveTimesItsPhases();
 
 private:
     render::FrameStats planned();
@@ -780,6 +784,50 @@ void RenderPlanTest::stagedRebuildSplitsOnlyFullRebuilds()
     expectAction("composite", "run");
     m_gl.renderer->setStagedRebuilds(false);
     expectSameAsForced("after a staged rebuild");
+}
+
+// Asked for its phases, a solve from the first-bounce light says where its time went: after every pass's own
+// line, one line per phase, with the runs of a solve of as many iterations (the bounce cells gather the
+// first-bounce light once; the higher-bounce cells gather it and then each iterate; a reinjection per
+// iteration; a filtering of the first-bounce light and of each iterate), their time a part of the pass's.
+void RenderPlanTest::bounceSolveTimesItsPhases()
+{
+    startInteractiveBounces();
+    m_gl.renderer->setBounceIterationsPerFrame(0);
+    m_gl.renderer->setPhaseTimes(true);
+    m_gl.renderer->invalidate();
+    planned();
+    m_gl.renderer->setPhaseTimes(false);
+    const int iterations = m_last.bounceIterations;
+    QVERIFY2(iterations >= 2, qPrintable(QString::number(iterations)));
+    const std::string prefix = "bounces: ";
+    std::map<std::string, int> runs;
+    double phasesMs = 0.0;
+    bool inPhases = false;
+    for (const render::PassStats& p : m_last.passes) {
+        if (p.name.rfind(prefix, 0) != 0) {
+            QVERIFY2(!inPhases, qPrintable(QString::fromStdString(p.name + " follows the phases")));
+            continue;
+        }
+        inPhases = true;
+        QCOMPARE(p.action, std::string("run"));
+        QVERIFY(p.gpuMs >= 0.0);
+        runs[p.name.substr(prefix.size())] = std::stoi(p.reason);
+        phasesMs += p.gpuMs;
+    }
+    QCOMPARE(int(runs.size()), 4);
+    QCOMPARE(runs["gathers on the bounce cells"], 1);
+    QCOMPARE(runs["gathers on the higher-bounce cells"], iterations);
+    QCOMPARE(runs["reinjections"], iterations);
+    QCOMPARE(runs["filterings into the mip chains"], iterations + 1);
+    QVERIFY2(phasesMs <= pass("bounces").gpuMs + 1e-3,
+        qPrintable(QString("phases %1 ms, the pass %2 ms").arg(phasesMs).arg(pass("bounces").gpuMs)));
+
+    // Not asked for: no phases.
+    m_gl.renderer->invalidate();
+    planned();
+    for (const render::PassStats& p : m_last.passes)
+        QVERIFY2(p.name.rfind(prefix, 0) != 0, p.name.c_str());
 }
 
 QTEST_GUILESS_MAIN(RenderPlanTest)
