@@ -56,26 +56,24 @@ void main()
 
     vec2 q[3] = vec2[3](p[0].xy, p[1].xy, p[2].xy);
 #ifdef CONSERVATIVE // (passes/VoxelizePass::voxelizer)
-    {
-        float orientation = n.z > 0.0 ? 1.0 : -1.0;
-        vec3 lines[3];
-        for (int i = 0; i < 3; ++i) {
-            vec2 e = p[(i + 1) % 3].xy - p[i].xy;
-            vec2 outward = orientation * vec2(e.y, -e.x);
-            // Shift the edge out by the pixel square's support in that direction: the exact Minkowski sum.
-            float c = -dot(outward, p[i].xy) - halfPixel * (abs(outward.x) + abs(outward.y));
-            lines[i] = vec3(outward, c);
-        }
-        for (int i = 0; i < 3; ++i) {
-            vec3 h = cross(lines[(i + 2) % 3], lines[i]);
-            vec2 moved = abs(h.z) > 1e-12 ? h.xy / h.z : p[i].xy;
-            vec2 offset = moved - p[i].xy;
-            // Needle tips shoot far out; the pixel bounds clip them anyway, so cap the spike.
-            float limit = 8.0 * halfPixel;
-            if (!(dot(offset, offset) <= limit * limit))
-                offset = dot(offset, offset) > 0.0 && !isinf(offset.x) ? normalize(offset) * limit : vec2(0.0);
-            q[i] = p[i].xy + offset;
-        }
+    float orientation = n.z > 0.0 ? 1.0 : -1.0;
+    vec3 lines[3];
+    for (int i = 0; i < 3; ++i) {
+        vec2 e = p[(i + 1) % 3].xy - p[i].xy;
+        vec2 outward = orientation * vec2(e.y, -e.x);
+        // Shift the edge out by the pixel square's support in that direction: the exact Minkowski sum.
+        float c = -dot(outward, p[i].xy) - halfPixel * (abs(outward.x) + abs(outward.y));
+        lines[i] = vec3(outward, c);
+    }
+    for (int i = 0; i < 3; ++i) {
+        vec3 h = cross(lines[(i + 2) % 3], lines[i]);
+        vec2 moved = abs(h.z) > 1e-12 ? h.xy / h.z : p[i].xy;
+        vec2 offset = moved - p[i].xy;
+        // Needle tips shoot far out; the pixel bounds clip them anyway, so cap the spike.
+        float limit = 8.0 * halfPixel;
+        if (!(dot(offset, offset) <= limit * limit))
+            offset = dot(offset, offset) > 0.0 && !isinf(offset.x) ? normalize(offset) * limit : vec2(0.0);
+        q[i] = p[i].xy + offset;
     }
 #endif
     for (int i = 0; i < 3; ++i) {
