@@ -436,6 +436,7 @@ render::RenderSettings RenderSettingsDock::presetSettings(Preset preset, const r
     s.dropBackFaces = true;
     s.enclosedSpace = true;
     s.stepFactor = 1.0f;
+    s.bounceStepScale = 2.0f;
     s.bounceCellSize = 4;
     s.higherBounceCellSize = 8;
     switch (preset) {

@@ -30,7 +30,7 @@ VoxelBouncePass::SolveKey VoxelBouncePass::keyOf(const FrameContext& frame)
     // still converging (an interactive view after a light edit) goes on when that light changes.
     const int res = frame.voxels.frame.resolution;
     return { ConeTraceKey::of(frame), s.bounces, s.bounceCellVoxels(res), s.higherBounceCellVoxels(res),
-        s.bounceTolerance, frame.voxels.materialsVersion };
+        s.bounceTolerance, s.bounceStepScale, frame.voxels.materialsVersion };
 }
 
 bool VoxelBouncePass::splitsBounces(const FrameContext& frame)
@@ -235,6 +235,9 @@ void VoxelBouncePass::gather(FrameContext& frame, CellGrid& grid, const gl::Text
     const auto setUp = [&](const gl::Program& gather, bool geometryKnown) {
         ConeTracingSetup::applyCellGather(
             gather, frame, anisotropic, grid.cellSize, false, front, back, normals);
+        // Longer steps than the pixels' cones take (RenderSettings::bounceStepScale): what the gathers find
+        // is looked up between cells and summed over bounces, so fewer samples along a cone do not show.
+        gather.set("uStepFactor", frame.settings.stepFactor * frame.settings.bounceStepScale);
         if (geometryKnown)
             normals.bindUnit(2);
         if (parentSums) {

@@ -55,7 +55,7 @@ private:
     struct SolveKey {
         ConeTraceKey cones;
         int bounces = 0, cellSize = 0, higherCellSize = 0;
-        float tolerance = 0.0f;
+        float tolerance = 0.0f, stepScale = 0.0f;
         std::uint64_t materials = 0;
         bool operator==(const SolveKey& other) const = default;
     };

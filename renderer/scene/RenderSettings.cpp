@@ -127,6 +127,8 @@ const std::map<std::string, Field>& fields()
             &RenderSettings::specularApertureDeg, "narrowest specular cone full angle, degrees (0..180)");
         t["step"]
             = makeField(&RenderSettings::stepFactor, "step factor beta: step = cone diameter * beta (>0)");
+        t["bounce_step"] = makeField(
+            &RenderSettings::bounceStepScale, "the bounce solve's cone steps as a multiple of step's (0..8]");
         t["drop_back_faces"] = makeField(&RenderSettings::dropBackFaces,
             "directional mips leave out surfaces facing the way a cone travels (on/off)");
         t["enclosed_space"] = makeField(&RenderSettings::enclosedSpace,
@@ -294,6 +296,8 @@ std::string RenderSettings::validate() const
         return "specular_aperture must be between 0 and 180 degrees (exclusive)";
     if (!(stepFactor > 0.0f))
         return "step must be greater than 0";
+    if (!(bounceStepScale > 0.0f && bounceStepScale <= 8.0f))
+        return "bounce_step must be greater than 0 and at most 8";
     if (indirectDivisor != 1 && indirectDivisor != 2 && indirectDivisor != 4)
         return "indirect_res must be 1, 2 or 4";
     if (areaShadowDivisor != 1 && areaShadowDivisor != 2 && areaShadowDivisor != 4)

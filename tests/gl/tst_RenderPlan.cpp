@@ -350,6 +350,25 @@ void RenderPlanTest::settingsInvalidateOnlyWhatReadsThem()
     expectAction("voxelize", "reused");
     expectSameAsForced("enclosed space on again");
 
+    // The bounce solve's step is its own: the solve runs again over the same voxels and light, and the pixels
+    // see light gathered with other steps (the image changes: the setting reaches the solve's gathers).
+    const render::RadianceImage before = m_plannedImage;
+    settings = original;
+    settings.bounceStepScale = 0.5f * original.bounceStepScale;
+    m_gl.renderer->setSettings(settings);
+    planned();
+    expectAction("voxelize", "reused");
+    expectAction("inject light", "reused");
+    expectAction("bounces", "run");
+    double moved = 0.0;
+    for (std::size_t i = 0; i < before.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            moved = std::max(moved, double(std::abs(m_plannedImage.pixels[i][c] - before.pixels[i][c])));
+    QVERIFY2(moved > 1e-4, qPrintable(QString("bounce step: the image moved by only %1").arg(moved)));
+    expectSameAsForced("bounce step");
+    m_gl.renderer->setSettings(original);
+    planned();
+
     // Nothing gathers diffuse light: the map is not built.
     settings = original;
     settings.indirectDiffuse = false;

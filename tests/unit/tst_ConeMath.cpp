@@ -224,6 +224,12 @@ void ConeMathTest::settingsParseAndReject()
     QVERIFY(!s.set("voxel_res", "1024").empty());
     QVERIFY(!s.set("diffuse_aperture", "180").empty());
     QVERIFY(!s.set("step", "nan").empty());
+    QVERIFY(s.set("bounce_step", "1.5").empty());
+    QCOMPARE(s.bounceStepScale, 1.5f);
+    QVERIFY(!s.set("bounce_step", "0").empty());
+    QVERIFY(!s.set("bounce_step", "9").empty());
+    QVERIFY(!s.set("bounce_step", "nan").empty());
+    QCOMPARE(s.bounceStepScale, 1.5f);
     QVERIFY(!s.set("no_such_key", "1").empty());
     QCOMPARE(s.voxelResolution, 64); // a rejected value leaves the settings as they were
     // The higher bounces' cells: a size of their own, never finer than the bounce cells'.
