@@ -33,23 +33,22 @@ const float kAreaPi = 3.14159265358979;
 // sampling the receiver's own surface around it.
 const float kMaxVisibilityTan = 0.58; // 30 degrees half-angle
 
-// The part of triangle (a, b, c) on the side of the plane through the origin that normal n points to, into q
-// (at most four corners); its corner count, below 3 when nothing is left.
-int clipTriangle(vec3 a, vec3 b, vec3 c, vec3 n, out vec3 q[4])
+// The part of segment (p0, p1) on the side of the plane through the origin that n points to, as its ends s0 and
+// s1 (both p0 when none of it is there); where it leaves that side its crossing goes to `leaving`, where it enters,
+// to `entering`. A convex polygon's edges clipped one by one, with the edge from `leaving` to `entering` where
+// it was cut, are its clipped part's edges: no array of corners, which llvmpipe indexes lane by lane (an array
+// of the clipped corners made the unshadowed light of the Cornell box's emitters half the composite's time).
+void clipSegment(vec3 p0, vec3 p1, vec3 n, out vec3 s0, out vec3 s1, inout vec3 leaving, inout vec3 entering)
 {
-    vec3 v[3] = vec3[3](a, b, c);
-    int count = 0;
-    for (int i = 0; i < 3; ++i) {
-        vec3 p0 = v[i];
-        vec3 p1 = v[(i + 1) % 3];
-        float d0 = dot(p0, n);
-        float d1 = dot(p1, n);
-        if (d0 >= 0.0 && count < 4)
-            q[count++] = p0;
-        if ((d0 >= 0.0) != (d1 >= 0.0) && count < 4)
-            q[count++] = p0 + (p1 - p0) * (d0 / (d0 - d1));
-    }
-    return count;
+    float d0 = dot(p0, n), d1 = dot(p1, n);
+    bool up0 = d0 >= 0.0, up1 = d1 >= 0.0;
+    vec3 x = up0 != up1 ? p0 + (p1 - p0) * (d0 / (d0 - d1)) : p0;
+    s0 = up0 ? p0 : x;
+    s1 = up1 ? p1 : (up0 ? x : s0);
+    if (up0 && !up1)
+        leaving = x;
+    if (!up0 && up1)
+        entering = x;
 }
 
 // theta * unit(a x b) for unit a, b: an edge's part of a polygon's vector irradiance.
@@ -61,18 +60,25 @@ vec3 edgeVector(vec3 a, vec3 b)
     return s > 1e-12 ? theta * c / s : vec3(0.0);
 }
 
+vec3 edgeVectorOf(vec3 p0, vec3 p1)
+{
+    return edgeVector(normalize(p0), normalize(p1));
+}
+
 // Triangle (a, b, c)'s vector irradiance over its radiance at the receiver, after clipping it to the plane
 // with normal n: its component along n is the cosine-weighted solid angle (pi times the form factor), and its
 // direction the mean direction the light arrives from.
 vec3 clippedTriangleVector(vec3 a, vec3 b, vec3 c, vec3 n)
 {
-    vec3 q[4];
-    int count = clipTriangle(a, b, c, n, q);
-    if (count < 3)
+    if (dot(a, n) < 0.0 && dot(b, n) < 0.0 && dot(c, n) < 0.0)
         return vec3(0.0);
-    vec3 sum = vec3(0.0);
-    for (int i = 0; i < count; ++i)
-        sum += edgeVector(normalize(q[i]), normalize(q[(i + 1) % count]));
+    vec3 leaving = a, entering = a; // an uncut triangle's closing edge has no length
+    vec3 ab0, ab1, bc0, bc1, ca0, ca1;
+    clipSegment(a, b, n, ab0, ab1, leaving, entering);
+    clipSegment(b, c, n, bc0, bc1, leaving, entering);
+    clipSegment(c, a, n, ca0, ca1, leaving, entering);
+    vec3 sum = edgeVectorOf(ab0, ab1) + edgeVectorOf(bc0, bc1) + edgeVectorOf(ca0, ca1)
+        + edgeVectorOf(leaving, entering);
     sum *= 0.5;
     return dot(sum, n) < 0.0 ? -sum : sum;
 }
@@ -284,46 +290,53 @@ layout(binding = PHONG_LTC_ALBEDO_UNIT) uniform sampler2D uPhongLtcAlbedo; // th
 uniform float uPhongLtcSize;
 uniform float uPhongLtcMinWidth;
 
+// Edge (p0, p1)'s part of ltcTriangleIntegral's two sums, its corners taken to the unit sphere: Lambert's contour
+// term and the integral of z^2 along the edge.
+void addLtcEdge(vec3 p0, vec3 p1, inout float lambert, inout float cubic)
+{
+    vec3 u = normalize(p0);
+    vec3 v = normalize(p1);
+    vec3 normal = cross(u, v);
+    float sine = length(normal);
+    if (sine <= 1e-9)
+        return;
+    float cosine = dot(u, v);
+    float theta = atan(sine, cosine);
+    float nz = normal.z / sine;
+    lambert += theta * nz;
+    float zu = u.z, zt = (v.z - cosine * u.z) / sine;
+    float sin2 = 2.0 * sine * cosine;
+    cubic += nz * (zu * zu * (0.5 * theta + 0.25 * sin2) + zt * zt * (0.5 * theta - 0.25 * sin2) + zu * zt * sine * sine);
+}
+
 // The fitted density's integral over triangle (a, b, c), given in the lobe's frame (normal +z): the triangle
 // clipped to the receiver's side, mapped by M^-1, clipped to the base's hemisphere, then the integral of the
 // base cos^3(theta) 2 / pi (scene/PhongLtcTable::kPower) over it: from Lambert's contour sum and, per edge, the
 // integral of z^2 along it (scene/LinearlyTransformedCosine.cpp has the derivation).
 float ltcTriangleIntegral(vec3 a, vec3 b, vec3 c, mat3 inverse)
 {
-    vec3 q[4];
-    int count = clipTriangle(a, b, c, vec3(0.0, 0.0, 1.0), q);
-    if (count < 3)
+    const vec3 up = vec3(0.0, 0.0, 1.0);
+    if (a.z < 0.0 && b.z < 0.0 && c.z < 0.0)
         return 0.0;
-    for (int i = 0; i < count; ++i)
-        q[i] = inverse * q[i];
-    vec3 r[5];
-    int kept = 0;
-    for (int i = 0; i < count; ++i) {
-        vec3 p0 = q[i];
-        vec3 p1 = q[(i + 1) % count];
-        if (p0.z >= 0.0)
-            r[kept++] = p0;
-        if ((p0.z >= 0.0) != (p1.z >= 0.0))
-            r[kept++] = p0 + (p1 - p0) * (p0.z / (p0.z - p1.z));
-    }
-    if (kept < 3)
-        return 0.0;
+    // Clipped to the receiver's side: three edges and the cut (clipSegment).
+    vec3 leaving = a, entering = a;
+    vec3 ab0, ab1, bc0, bc1, ca0, ca1;
+    clipSegment(a, b, up, ab0, ab1, leaving, entering);
+    clipSegment(b, c, up, bc0, bc1, leaving, entering);
+    clipSegment(c, a, up, ca0, ca1, leaving, entering);
+    // Mapped by M^-1, those four edges clipped to the base's hemisphere, and its cut.
+    vec3 mappedLeaving = inverse * ab0, mappedEntering = mappedLeaving;
     float lambert = 0.0, cubic = 0.0;
-    for (int i = 0; i < kept; ++i) {
-        vec3 u = normalize(r[i]);
-        vec3 v = normalize(r[(i + 1) % kept]);
-        vec3 normal = cross(u, v);
-        float sine = length(normal);
-        if (sine <= 1e-9)
-            continue;
-        float cosine = dot(u, v);
-        float theta = atan(sine, cosine);
-        float nz = normal.z / sine;
-        lambert += theta * nz;
-        float zu = u.z, zt = (v.z - cosine * u.z) / sine;
-        float sin2 = 2.0 * sine * cosine;
-        cubic += nz * (zu * zu * (0.5 * theta + 0.25 * sin2) + zt * zt * (0.5 * theta - 0.25 * sin2) + zu * zt * sine * sine);
-    }
+    vec3 s0, s1;
+    clipSegment(inverse * ab0, inverse * ab1, up, s0, s1, mappedLeaving, mappedEntering);
+    addLtcEdge(s0, s1, lambert, cubic);
+    clipSegment(inverse * bc0, inverse * bc1, up, s0, s1, mappedLeaving, mappedEntering);
+    addLtcEdge(s0, s1, lambert, cubic);
+    clipSegment(inverse * ca0, inverse * ca1, up, s0, s1, mappedLeaving, mappedEntering);
+    addLtcEdge(s0, s1, lambert, cubic);
+    clipSegment(inverse * leaving, inverse * entering, up, s0, s1, mappedLeaving, mappedEntering);
+    addLtcEdge(s0, s1, lambert, cubic);
+    addLtcEdge(mappedLeaving, mappedEntering, lambert, cubic);
     float side = lambert >= 0.0 ? 1.0 : -1.0;
     return (side * lambert + side * cubic) / (2.0 * kAreaPi);
 }
