@@ -100,8 +100,8 @@ struct RenderSettings {
     float stepFactor = 1.0f; ///< beta: step = cone diameter * beta.
     /// The bounce solve's gathers step this many times as far as the pixels' cones (step = cone diameter *
     /// beta * this). What they gather is looked up between cells and summed over bounces, so fewer, longer
-    /// steps do not show: at 2 the solve's gathers take about a quarter less time and the references read
-    /// within a few percent of 1 (docs/DESIGN.md, "The solve's gathers step twice as far").
+    /// steps do not show: at 2 the solve's gathers take a fifth to a quarter less time and the references
+    /// read within a few percent of 1 (docs/DESIGN.md, "The solve's gathers step twice as far").
     float bounceStepScale = 2.0f;
     /// The directional mips leave out voxels whose surface faces the way a cone travels (neither light nor
     /// opacity), so a surface no longer lights and shades the cones leaving it: ceilings beside a light's hot
