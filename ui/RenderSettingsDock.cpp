@@ -221,6 +221,11 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_step = makeSpin(0.05, 10.0, 2, 0.05, QString(),
         tr("β: step = cone diameter × β. Smaller is more accurate and slower."));
     m_step->setObjectName(QStringLiteral("stepFactor"));
+    // The validator's range (RenderSettings::validate): above 0, at most 8.
+    m_bounceStep = makeSpin(0.25, 8.0, 2, 0.25, QStringLiteral("×"),
+        tr("The bounce solve's cone steps as a multiple of β: its light is interpolated between cells and "
+           "summed over bounces, so longer steps cost little accuracy. 1 steps as the pixels' cones do."));
+    m_bounceStep->setObjectName(QStringLiteral("bounceStep"));
     m_maxDistance = makeSpin(0.0, 10000.0, 2, 0.1, QStringLiteral(" m"),
         tr("Cone length in metres; \"auto\" uses the voxel grid's diagonal"));
     m_maxDistance->setObjectName(QStringLiteral("maxDistance"));
@@ -306,6 +311,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     coneForm->addRow(tr("Diffuse aperture"), m_diffuseAperture);
     coneForm->addRow(tr("Specular aperture"), m_specularAperture);
     coneForm->addRow(tr("Step factor β"), m_step);
+    coneForm->addRow(tr("Bounce step"), m_bounceStep);
     coneForm->addRow(tr("Max distance"), m_maxDistance);
     coneForm->addRow(tr("Cone offset"), m_coneOffset);
     coneForm->addRow(tr("Indirect resolution"), m_indirectResolution);
@@ -387,6 +393,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     bindSpin(m_diffuseAperture, &render::RenderSettings::diffuseApertureDeg);
     bindSpin(m_specularAperture, &render::RenderSettings::specularApertureDeg);
     bindSpin(m_step, &render::RenderSettings::stepFactor);
+    bindSpin(m_bounceStep, &render::RenderSettings::bounceStepScale);
     bindSpin(m_coneOffset, &render::RenderSettings::coneOffsetVoxels);
     bindSpin(m_exposure, &render::RenderSettings::exposure);
     connect(m_maxDistance, &QDoubleSpinBox::valueChanged, this, [this](double v) {
@@ -584,7 +591,7 @@ void RenderSettingsDock::load()
     const QList<QWidget*> editors { m_resolution, m_gridLevels, m_conservative, m_anisotropic,
         m_dropBackFaces, m_enclosedSpace, m_bounces, m_indirectResolution, m_specularResolution,
         m_areaShadowResolution, m_irradianceCache, m_irradianceCell, m_coneCount, m_diffuseAperture,
-        m_specularAperture, m_step, m_maxDistance, m_coneOffset, m_direct, m_indirectDiffuse,
+        m_specularAperture, m_step, m_bounceStep, m_maxDistance, m_coneOffset, m_direct, m_indirectDiffuse,
         m_indirectSpecular, m_ao, m_emission, m_shadowMap, m_exposure, m_view, m_budget, m_fast, m_balanced,
         m_high };
     std::vector<std::unique_ptr<QSignalBlocker>> blockers;
@@ -616,6 +623,7 @@ void RenderSettingsDock::load()
     setSpinValue(m_diffuseAperture, double(s.diffuseApertureDeg));
     setSpinValue(m_specularAperture, double(s.specularApertureDeg));
     setSpinValue(m_step, double(s.stepFactor));
+    setSpinValue(m_bounceStep, double(s.bounceStepScale));
     setSpinValue(m_maxDistance, s.maxDistance < 0.0f ? m_maxDistance->minimum() : double(s.maxDistance));
     setSpinValue(m_coneOffset, double(s.coneOffsetVoxels));
     m_direct->setChecked(s.direct);

@@ -89,6 +89,7 @@ private:
     QDoubleSpinBox* m_diffuseAperture = nullptr;
     QDoubleSpinBox* m_specularAperture = nullptr;
     QDoubleSpinBox* m_step = nullptr;
+    QDoubleSpinBox* m_bounceStep = nullptr;
     QDoubleSpinBox* m_maxDistance = nullptr;
     QDoubleSpinBox* m_coneOffset = nullptr;
     QCheckBox* m_direct = nullptr;

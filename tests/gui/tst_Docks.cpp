@@ -402,6 +402,17 @@ void TstDocks::renderSettingsResolutionCombo()
     distance->setValue(distance->minimum());
     QVERIFY(document->state().settings.maxDistance < 0.0f);
 
+    // The bounce solve's step, one undoable edit, and shown again after an undo.
+    auto* bounceStep = child<QDoubleSpinBox>(&dock, "bounceStep");
+    QCOMPARE(bounceStep->value(), double(document->state().settings.bounceStepScale));
+    const int before = document->undoStack()->count();
+    bounceStep->setValue(1.0);
+    QCOMPARE(document->state().settings.bounceStepScale, 1.0f);
+    QCOMPARE(document->undoStack()->count(), before + 1);
+    document->undoStack()->undo();
+    QCOMPARE(document->state().settings.bounceStepScale, render::RenderSettings {}.bounceStepScale);
+    QCOMPARE(bounceStep->value(), double(render::RenderSettings {}.bounceStepScale));
+
     auto* view = child<QComboBox>(&dock, "viewCombo");
     view->setCurrentIndex(view->findData(int(render::DebugView::AmbientOcclusion)));
     QCOMPARE(document->state().settings.view, render::DebugView::AmbientOcclusion);
