@@ -221,7 +221,7 @@ RenderSettingsDock::RenderSettingsDock(QWidget* parent)
     m_step = makeSpin(0.05, 10.0, 2, 0.05, QString(),
         tr("β: step = cone diameter × β. Smaller is more accurate and slower."));
     m_step->setObjectName(QStringLiteral("stepFactor"));
-    // The validator's range (RenderSettings::validate): above 0, at most 8.
+    // At most RenderSettings::validate's 8; a quarter already steps four times finer than the pixels' cones.
     m_bounceStep = makeSpin(0.25, 8.0, 2, 0.25, QStringLiteral("×"),
         tr("The bounce solve's cone steps as a multiple of β: its light is interpolated between cells and "
            "summed over bounces, so longer steps cost little accuracy. 1 steps as the pixels' cones do."));

@@ -20,7 +20,7 @@ void PhaseTimes::start(bool enabled)
 {
     m_enabled = enabled;
     m_phases.clear();
-    m_records.clear();
+    m_runPhases.clear();
 }
 
 PhaseTimes::Scope PhaseTimes::time(const char* phase)
@@ -31,10 +31,10 @@ PhaseTimes::Scope PhaseTimes::time(const char* phase)
     const std::size_t index = std::size_t(named - m_phases.begin());
     if (named == m_phases.end())
         m_phases.emplace_back(phase);
-    if (m_records.size() == m_queries.size())
+    if (m_runPhases.size() == m_queries.size())
         m_queries.push_back(gl::TimerQuery::create());
-    m_records.push_back({ index, m_records.size() });
-    gl::TimerQuery& query = m_queries[m_records.back().query];
+    gl::TimerQuery& query = m_queries[m_runPhases.size()];
+    m_runPhases.push_back(index);
     query.begin();
     return Scope(&query);
 }
@@ -43,9 +43,9 @@ std::vector<PassStats> PhaseTimes::read(const std::string& prefix) const
 {
     std::vector<double> ms(m_phases.size(), 0.0);
     std::vector<int> runs(m_phases.size(), 0);
-    for (const Record& record : m_records) {
-        ms[record.phase] += m_queries[record.query].elapsedMs();
-        ++runs[record.phase];
+    for (std::size_t run = 0; run < m_runPhases.size(); ++run) {
+        ms[m_runPhases[run]] += m_queries[run].elapsedMs();
+        ++runs[m_runPhases[run]];
     }
     std::vector<PassStats> stats;
     for (std::size_t i = 0; i < m_phases.size(); ++i)

@@ -48,16 +48,12 @@ public:
     std::vector<PassStats> read(const std::string& prefix) const;
 
 private:
-    struct Record {
-        std::size_t phase;
-        std::size_t query;
-    };
     bool m_enabled = false;
     std::vector<std::string> m_phases;
     /// Grows to the most runs one pass has timed, and is reused; a deque, so that a scope's query stays put
     /// while a nested scope adds one.
     std::deque<gl::TimerQuery> m_queries;
-    std::vector<Record> m_records;
+    std::vector<std::size_t> m_runPhases; ///< run k's phase (an index into m_phases), timed by m_queries[k]
 };
 
 } // namespace vct::render
