@@ -52,6 +52,8 @@ struct Vertex {
     glm::vec3 normal;
     glm::vec2 uv;
 };
+// dispatchTriangles() hands the vertices to compute shaders as eight floats each.
+static_assert(sizeof(Vertex) == 8 * sizeof(float));
 
 } // namespace
 
@@ -227,14 +229,8 @@ bool GpuScene::showsFrontOnly(std::size_t index) const
         && glm::determinant(glm::mat3(m_scene.meshes[index].transform)) > 0.0f;
 }
 
-void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const
+std::vector<GpuScene::Run> GpuScene::runsOf(const DrawOptions& options) const
 {
-    program.use();
-    struct Run {
-        std::size_t mesh;
-        std::uint32_t firstIndex, indexCount;
-        float distance;
-    };
     std::vector<Run> runs;
     const bool perCluster = options.visibleIn || options.from;
     for (std::size_t i = 0; i < m_meshes.size(); ++i) {
@@ -274,8 +270,14 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
     if (options.from)
         std::stable_sort(
             runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.distance < b.distance; });
+    return runs;
+}
+
+void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const
+{
+    program.use();
     std::size_t bound = m_meshes.size();
-    for (const Run& run : runs) {
+    for (const Run& run : runsOf(options)) {
         if (run.mesh != bound) {
             bindMesh(program, run.mesh, albedoUnit);
             if (options.stencilPixelClass)
@@ -292,6 +294,32 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
             reinterpret_cast<const void*>(std::uintptr_t(run.firstIndex) * sizeof(std::uint32_t)));
     }
     glDisable(GL_CULL_FACE);
+    glBindVertexArray(0);
+}
+
+void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
+    GLuint vertexBinding, GLuint groupSize) const
+{
+    program.use();
+    DrawOptions unordered = options;
+    unordered.from = nullptr;
+    std::size_t bound = m_meshes.size();
+    for (const Run& run : runsOf(unordered)) {
+        if (run.mesh != bound) {
+            bindMesh(program, run.mesh, albedoUnit);
+            const GpuMesh& gpu = m_meshes[run.mesh];
+            gpu.vertices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding);
+            gpu.indices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 1);
+            program.set("uVertexCount", GLuint(m_scene.meshes[run.mesh].positions.size()));
+            bound = run.mesh;
+        }
+        const GLuint triangles = run.indexCount / 3;
+        if (triangles == 0)
+            continue;
+        program.set("uFirstIndex", GLuint(run.firstIndex));
+        program.set("uTriangleCount", triangles);
+        glDispatchCompute((triangles + groupSize - 1) / groupSize, 1, 1);
+    }
     glBindVertexArray(0);
 }
 

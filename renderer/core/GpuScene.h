@@ -65,6 +65,15 @@ public:
      */
     void draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const;
     /**
+     * Runs `program`, a compute shader of `groupSize` invocations a workgroup, with one invocation per
+     * triangle of what draw() would draw with the same options (its `from` is ignored). Per run of triangles
+     * it sets the uniforms draw() sets, binds the mesh's vertices (eight floats each: position, normal, uv)
+     * and indices as storage buffers `vertexBinding` and `vertexBinding + 1`, and sets uFirstIndex,
+     * uTriangleCount and uVertexCount.
+     */
+    void dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
+        GLuint vertexBinding, GLuint groupSize) const;
+    /**
      * Binds the material table (shaders/common/MaterialTable.glsl) to texture unit `unit`: the per-material
      * values the g-buffer does not store per pixel, found through the material index it does.
      */
@@ -100,6 +109,14 @@ private:
         mutable glm::mat4 cullTransform { 0.0f };
         mutable bool cullBack = false;
     };
+    /** Consecutive triangles of one mesh that one draw call covers. */
+    struct Run {
+        std::size_t mesh;
+        std::uint32_t firstIndex, indexCount;
+        float distance; ///< from DrawOptions::from, for the order of draws
+    };
+    /** The runs draw() covers with these options, in its order. */
+    std::vector<Run> runsOf(const DrawOptions& options) const;
     void bindMesh(const gl::Program& program, std::size_t mesh, GLuint albedoUnit) const;
     /** Whether back faces of the mesh can be left out of a view from @p from without changing what it sees.
      */

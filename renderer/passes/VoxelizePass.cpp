@@ -48,7 +48,7 @@ std::optional<glm::ivec3> VoxelizePass::gridStep(const FrameContext& frame) cons
 {
     // Only a grid that moved alone: any other change voxelizes the whole grid anyway.
     if (m_grid == frame.voxels.frame || m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization)
+        || modeChanged(frame))
         return std::nullopt;
     return VolumeShift::between(m_grid, frame.voxels.frame);
 }
@@ -59,7 +59,7 @@ PassDecision VoxelizePass::plan(const FrameContext& frame) const
         return { PassDecision::Action::Run, "no valid output yet" };
     if (m_staticGeometry != frame.versions.staticGeometry)
         return { PassDecision::Action::Run, "static geometry or grid changed" };
-    if (m_conservative != frame.settings.conservativeVoxelization)
+    if (modeChanged(frame))
         return { PassDecision::Action::Run, "voxelization mode changed" };
     if (!(m_grid == frame.voxels.frame)) {
         if (const std::optional<glm::ivec3> step = gridStep(frame))
@@ -193,9 +193,14 @@ bool VoxelizePass::redoesWholeGrid(const FrameContext& frame) const
 {
     // As execute() decides: a static change or a new mode rebuilds everything, a grid that stepped the slabs
     // it newly covers, anything else a region.
-    return m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization
+    return m_staticGeometry != frame.versions.staticGeometry || modeChanged(frame)
         || (!(m_grid == frame.voxels.frame) && !gridStep(frame));
+}
+
+bool VoxelizePass::modeChanged(const FrameContext& frame) const
+{
+    return m_conservative != frame.settings.conservativeVoxelization
+        || m_smallByCompute != frame.settings.smallTrianglesByCompute;
 }
 
 void VoxelizePass::ensureResources(FrameContext& frame)
@@ -260,20 +265,37 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     const LatticePlacement lattice = latticeOf(frame);
     // With hardware conservative raster the geometry shader need not enlarge triangles itself.
     const bool conservative = frame.settings.conservativeVoxelization && !nvConservative;
-    for (const bool emissive : { false, true }) {
-        const gl::Program& program = voxelizer(frame, emissive, conservative);
-        program.use();
-        program.set("uLatticeOrigin", lattice.origin);
-        program.set("uLatticeOffset", lattice.offset);
-        program.set("uVoxelSize", voxel);
-        program.set("uResolution", res);
-        program.set("uRegionLo", region.lo);
-        program.set("uRegionHi", region.hi);
-        program.set("uGroupSize", OccupiedCellList::kGroupSize);
+    // Hardware conservative rasterisation covers what the geometry shader's enlargement does; the compute
+    // path enlarges as that does, so it serves either way.
+    const bool smallByCompute = frame.settings.smallTrianglesByCompute;
+    for (const int kind : { 0, 1, 2, 3 }) {
+        const bool emissive = kind & 1, textured = kind & 2;
         DrawOptions options;
         options.layer = layer;
-        options.materials = [emissive](const Material& m) { return m.isEmissive() == emissive; };
+        options.materials = [emissive, textured](const Material& m) {
+            return m.isEmissive() == emissive && (m.albedoTexture >= 0) == textured;
+        };
         options.visibleIn = &regionBox;
+        const auto setUniforms = [&](const gl::Program& program) {
+            program.use();
+            program.set("uLatticeOrigin", lattice.origin);
+            program.set("uLatticeOffset", lattice.offset);
+            program.set("uVoxelSize", voxel);
+            program.set("uResolution", res);
+            program.set("uRegionLo", region.lo);
+            program.set("uRegionHi", region.hi);
+            program.set("uGroupSize", OccupiedCellList::kGroupSize);
+        };
+        if (smallByCompute) {
+            const gl::Program& small = voxelizer(
+                frame, { emissive, textured, frame.settings.conservativeVoxelization, Path::SmallByCompute });
+            setUniforms(small);
+            frame.scene.dispatchTriangles(small, options, 0, kVertexBinding, kTriangleGroupSize);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+        const gl::Program& program = voxelizer(frame,
+            { emissive, textured, conservative, smallByCompute ? Path::LargeByRaster : Path::AllByRaster });
+        setUniforms(program);
         frame.scene.draw(program, options, 0);
     }
     if (nvConservative)
@@ -285,24 +307,34 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, bool emissive, bool conservative)
+const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, const VoxelizerVariant& variant)
 {
     // What a frame leaves out is a define, not a uniform: with the emission volume's compare-and-swap and the
     // conservative tests in every variant, chosen by uniforms, the atrium's voxelization took about a fifth
     // longer on llvmpipe in three pairs of four (docs/BENCHMARKS.md).
     std::vector<std::string> defines;
-    std::string name = "voxelize";
-    if (emissive) {
+    std::string name = variant.path == Path::SmallByCompute ? "voxelize small triangles" : "voxelize";
+    if (variant.emissive) {
         defines.emplace_back("EMISSIVE");
         name += " (emissive)";
+    }
+    if (variant.textured) {
+        defines.emplace_back("TEXTURED");
+        name += ", textured";
     }
     if (frame.voxels.emission) {
         defines.emplace_back("EMISSION_VOLUME");
         name += ", emission volume";
     }
-    if (conservative) {
+    if (variant.conservative) {
         defines.emplace_back("CONSERVATIVE");
         name += ", conservative";
+    }
+    if (variant.path == Path::SmallByCompute)
+        return frame.shaders.program({ name, { "voxelize/VoxelizeSmall.comp" }, defines });
+    if (variant.path == Path::LargeByRaster) {
+        defines.emplace_back("SMALL_BY_COMPUTE");
+        name += ", large triangles";
     }
     return frame.shaders.program(
         { name, { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag" }, defines });
@@ -333,8 +365,8 @@ void VoxelizePass::execute(FrameContext& frame)
     const bool hasDynamic = frame.scene.hasDynamicMeshes();
     const Aabb dynamicBounds = frame.scene.scene().bounds(true);
     const std::optional<glm::ivec3> step = gridStep(frame);
-    const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry
-        || m_conservative != frame.settings.conservativeVoxelization || (!(m_grid == v.frame) && !step);
+    const bool staticChanged = m_staticGeometry != frame.versions.staticGeometry || modeChanged(frame)
+        || (!(m_grid == v.frame) && !step);
     const bool dynamicMoved = hasDynamic && m_dynamicVersion != frame.versions.dynamicVoxels();
     // What to redo: the whole grid after a static change; else around the static meshes whose material
     // changed, and around the moving objects, now and before a move. The region is cleared and everything in
@@ -385,6 +417,7 @@ void VoxelizePass::execute(FrameContext& frame)
     m_staticGeometry = frame.versions.staticGeometry;
     m_staticMaterials = frame.versions.staticMaterials;
     m_conservative = frame.settings.conservativeVoxelization;
+    m_smallByCompute = frame.settings.smallTrianglesByCompute;
     m_grid = v.frame;
     v.occupiedCountStale = v.occupiedCountStale || !region.isEmpty() || !slabs.empty();
     v.changedRegions = slabs;

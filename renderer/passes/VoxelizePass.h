@@ -52,11 +52,27 @@ private:
     /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
     void resolve(FrameContext& frame, const OccupiedCellList& touched);
 
-    /**
-     * The voxelizer's program for meshes whose material emits (@p emissive) or not, into a grid with an
-     * emission volume or without, enlarging triangles in the geometry shader (@p conservative) or not.
-     */
-    static const gl::Program& voxelizer(FrameContext& frame, bool emissive, bool conservative);
+    /** Which triangles a voxelizer program takes, and how. */
+    enum class Path {
+        AllByRaster, ///< every triangle through the geometry shader and the rasteriser
+        SmallByCompute, ///< triangles of a few pixels, in a compute shader (voxelize/VoxelizeSmall.comp)
+        LargeByRaster, ///< the others, through the rasteriser
+    };
+    struct VoxelizerVariant {
+        bool emissive; ///< for meshes whose material emits
+        bool textured; ///< for meshes whose material has an albedo texture
+        bool conservative; ///< triangles enlarged by the pixel square in the shader
+        Path path;
+    };
+    /** The voxelizer's program for a variant, into a grid with an emission volume or without. */
+    static const gl::Program& voxelizer(FrameContext& frame, const VoxelizerVariant& variant);
+    /** Whether the voxelization's settings differ from the last full rebuild's. */
+    bool modeChanged(const FrameContext& frame) const;
+
+    /// Storage buffers of the mesh's vertices and indices for the compute path (the occupied list takes 0,
+    /// 1).
+    static constexpr GLuint kVertexBinding = 2;
+    static constexpr GLuint kTriangleGroupSize = 64; ///< VoxelizeSmall.comp's local_size_x
 
     const gl::Program* m_resolve = nullptr;
     OccupiedCellList m_regionStaticVoxels; ///< the static voxels a partial update redid
@@ -67,6 +83,7 @@ private:
     std::uint64_t m_dynamicVersion = 0;
     std::uint64_t m_albedoSerial = 0; ///< the albedo texture m_framebuffer was made for
     bool m_conservative = false; ///< the voxelization mode of the last full rebuild
+    bool m_smallByCompute = false; ///< and whether its small triangles went through the compute path
     /// Where the grid was: a clip level follows the camera (core/ClipmapLayout) and is redone when it moves.
     VoxelGridFrame m_grid;
     VoxelGridFrame m_brickGrid; ///< the grid the bricks were allocated for

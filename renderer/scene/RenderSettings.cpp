@@ -87,6 +87,8 @@ const std::map<std::string, Field>& fields()
             = makeField(&RenderSettings::voxelResolution, "voxel grid cells per side (power of two, 8..512)");
         t["conservative"]
             = makeField(&RenderSettings::conservativeVoxelization, "conservative voxelization (on/off)");
+        t["small_triangle_compute"] = makeField(&RenderSettings::smallTrianglesByCompute,
+            "voxelize triangles of a few voxels in a compute shader (on/off; the voxels are the same)");
         t["anisotropic"] = makeField(&RenderSettings::anisotropicMips,
             "direction-dependent mips: six chains composited along each axis (on/off)");
         Field bounces;

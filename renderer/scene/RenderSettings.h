@@ -45,6 +45,10 @@ struct RenderSettings {
     /** How many grids the voxels take: clipLevels for a clipmap, else 1. */
     int gridLevels() const { return voxelMode == VoxelMode::Clipmap ? clipLevels : 1; }
     bool conservativeVoxelization = true;
+    /// Triangles spanning a few voxels at most are voxelized by a compute shader, one invocation each, the
+    /// others by the rasteriser (passes/VoxelizePass): the same voxels, for less time where a scene has many
+    /// small triangles. Off is for comparison.
+    bool smallTrianglesByCompute = true;
     /// Direction-dependent mips (six chains composited front to back along each axis) instead of one
     /// box-filtered chain: thin walls stay opaque to wide cones, at three lookups per coarse sample. On by
     /// default: with 30-degree cones it is the largest accuracy gain measured (docs/ACCURACY.md, "Recommended

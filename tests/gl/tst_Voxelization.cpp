@@ -66,6 +66,37 @@ std::set<Voxel> expectedConservative(const render::Renderer& renderer, glm::vec3
     return voxels;
 }
 
+// A sphere of `rings` x 2 `rings` quads: triangles well under a voxel for the grids below, with smooth
+// normals and uvs running once around (u) and from pole to pole (v).
+render::Mesh makeSphere(glm::vec3 centre, float radius, int rings, int material)
+{
+    render::Mesh mesh;
+    mesh.material = material;
+    const int segments = 2 * rings;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const float theta = 3.14159265f * float(r) / float(rings);
+            const float phi = 6.28318531f * float(s) / float(segments);
+            const glm::vec3 n(
+                std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            mesh.positions.push_back(centre + radius * n);
+            mesh.normals.push_back(n);
+            mesh.uvs.push_back({ float(s) / float(segments), float(r) / float(rings) });
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const std::uint32_t a = std::uint32_t(r * (segments + 1) + s), b = a + 1,
+                                c = a + std::uint32_t(segments + 1), d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), { a, c, b, b, c, d });
+        }
+    return mesh;
+}
+
+struct VoxelValues {
+    std::vector<float> albedo, normal, emission;
+    int size = 0;
+};
+
 QString describe(const std::set<Voxel>& s)
 {
     QStringList parts;
@@ -88,6 +119,8 @@ private slots:
     void overlappingSurfacesAverage();
     void manySurfacesAverageWithinQuantization();
     void opposingFacesCancelTheirNormals();
+    void smallTrianglesMatchTheRasterizer_data();
+    void smallTrianglesMatchTheRasterizer();
     void noGlErrors();
 
 private:
@@ -95,6 +128,7 @@ private:
     void renderOnSixteenCubed(const render::Scene& scene);
     void voxelize(
         const std::vector<glm::vec3>& triangles, bool conservative, glm::vec3 albedo = glm::vec3(0.5f));
+    VoxelValues voxelizeAtResolution(const render::Scene& scene, const render::RenderSettings& settings);
     test::GlTestContext m_gl;
 };
 
@@ -127,17 +161,23 @@ void VoxelizationTest::voxelize(const std::vector<glm::vec3>& triangles, bool co
 void VoxelizationTest::knownTriangleGivesExactlyItsVoxels_data()
 {
     QTest::addColumn<bool>("conservative");
-    QTest::newRow("conservative") << true;
-    QTest::newRow("plain") << false;
+    QTest::addColumn<float>("leg");
+    // Legs of 7.5 voxels go through the rasteriser; of 2.7 (pixel bounds 3.7 wide with the enlargement),
+    // through the compute path for small triangles (voxelize/VoxelizeSmall.comp).
+    QTest::newRow("conservative, rasterised") << true << 7.5f;
+    QTest::newRow("plain, rasterised") << false << 7.5f;
+    QTest::newRow("conservative, small") << true << 2.7f;
+    QTest::newRow("plain, small") << false << 2.7f;
 }
 
 void VoxelizationTest::knownTriangleGivesExactlyItsVoxels()
 {
     QFETCH(bool, conservative);
+    QFETCH(float, leg);
     // A right isosceles triangle in the plane z = 5.3, legs along x and y: its exact voxel set is known both
     // ways. Plain rasterisation keeps voxels whose column centre lies inside; conservative keeps every voxel
     // the triangle touches.
-    const glm::vec3 a(2.2f, 3.2f, 5.3f), b(9.7f, 3.2f, 5.3f), c(2.2f, 10.7f, 5.3f);
+    const glm::vec3 a(2.2f, 3.2f, 5.3f), b(2.2f + leg, 3.2f, 5.3f), c(2.2f, 3.2f + leg, 5.3f);
     voxelize({ a, b, c }, conservative);
     const std::set<Voxel> actual = occupiedVoxels(*m_gl.renderer);
     std::set<Voxel> expected;
@@ -292,6 +332,107 @@ void VoxelizationTest::opposingFacesCancelTheirNormals()
     const glm::vec4 face = at(11);
     QVERIFY2(std::abs(face.z - 1.0f) < 0.01f, qPrintable(QString("face: n.z %1").arg(face.z)));
     QCOMPARE(face.w, 0.0f);
+}
+
+VoxelValues VoxelizationTest::voxelizeAtResolution(
+    const render::Scene& scene, const render::RenderSettings& settings)
+{
+    m_gl.renderer->setSettings(settings);
+    m_gl.renderer->setScene(scene);
+    m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
+    m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
+    VoxelValues v;
+    v.albedo = m_gl.renderer->readVoxels("albedo", 0, v.size);
+    v.normal = m_gl.renderer->readVoxels("normal", 0, v.size);
+    v.emission = m_gl.renderer->readVoxels("emission", 0, v.size);
+    return v;
+}
+
+void VoxelizationTest::smallTrianglesMatchTheRasterizer_data()
+{
+    QTest::addColumn<bool>("conservative");
+    QTest::addColumn<bool>("textured");
+    QTest::newRow("conservative") << true << false;
+    QTest::newRow("plain") << false << false;
+    QTest::newRow("conservative, textured") << true << true;
+}
+
+void VoxelizationTest::smallTrianglesMatchTheRasterizer()
+{
+    // Spheres of triangles a few tenths of a voxel wide, one emissive, and a large quad through both, whose
+    // fragments mix with theirs in the same voxels: voxelized with the compute path for small triangles, the
+    // grid holds the voxels the rasteriser gives them, with the same material to within the running means'
+    // dependence on the order of arrival.
+    QFETCH(bool, conservative);
+    QFETCH(bool, textured);
+    render::Scene scene;
+    render::Material grey, lamp, wall;
+    grey.albedo = glm::vec3(0.6f, 0.5f, 0.4f);
+    lamp.albedo = glm::vec3(0.2f, 0.3f, 0.9f);
+    lamp.emission = glm::vec3(2.0f, 1.0f, 0.5f);
+    wall.albedo = glm::vec3(0.9f, 0.1f, 0.1f);
+    if (textured) {
+        // Stripes along u: what each voxel gets depends on where and at what level the texture is read.
+        render::TextureImage stripes;
+        stripes.width = 64;
+        stripes.height = 4;
+        for (int y = 0; y < stripes.height; ++y)
+            for (int x = 0; x < stripes.width; ++x) {
+                const std::uint8_t value = (x / 8) % 2 ? 255 : 40;
+                stripes.rgba.insert(stripes.rgba.end(), { value, std::uint8_t(255 - value), 128, 255 });
+            }
+        scene.textures.push_back(stripes);
+        grey.albedoTexture = 0;
+    }
+    scene.materials = { grey, lamp, wall };
+    scene.meshes.push_back(makeSphere({ 6.3f, 7.9f, 8.1f }, 3.7f, 40, 0));
+    scene.meshes.push_back(makeSphere({ 11.2f, 9.4f, 7.3f }, 2.1f, 24, 1));
+    scene.meshes.push_back(test::makeTriangles(test::quad({ 2.3f, 2.2f, 8.45f }, { 13.6f, 2.2f, 8.45f },
+                                                   { 13.6f, 13.7f, 8.45f }, { 2.3f, 13.7f, 8.45f }),
+        2));
+    render::RenderSettings settings;
+    settings.voxelResolution = 32;
+    settings.conservativeVoxelization = conservative;
+    settings.smallTrianglesByCompute = false;
+    const VoxelValues raster = voxelizeAtResolution(scene, settings);
+    settings.smallTrianglesByCompute = true;
+    const VoxelValues compute = voxelizeAtResolution(scene, settings);
+    QCOMPARE(compute.size, 32);
+    QCOMPARE(raster.size, 32);
+
+    int occupied = 0, onlyRaster = 0, onlyCompute = 0, emitting = 0;
+    float albedoError = 0.0f, emissionError = 0.0f, normalError = 0.0f;
+    for (std::size_t i = 0; i < raster.albedo.size(); i += 4) {
+        const bool inRaster = raster.albedo[i + 3] > 0.5f, inCompute = compute.albedo[i + 3] > 0.5f;
+        onlyRaster += inRaster && !inCompute;
+        onlyCompute += inCompute && !inRaster;
+        if (!inRaster || !inCompute)
+            continue;
+        ++occupied;
+        emitting += raster.emission[i] > 0.0f;
+        for (std::size_t c = 0; c < 3; ++c) {
+            albedoError = std::max(albedoError, std::abs(raster.albedo[i + c] - compute.albedo[i + c]));
+            emissionError = std::max(emissionError,
+                std::abs(raster.emission[i + c] - compute.emission[i + c])
+                    / std::max(lamp.emission[int(c)], 1e-6f));
+            normalError = std::max(normalError, std::abs(raster.normal[i + c] - compute.normal[i + c]));
+        }
+    }
+    const QString summary
+        = QString("%1 voxels in both, %2 only rasterised, %3 only by the compute path; largest "
+                  "differences: albedo %4, emission %5 (of the lamp's), normal %6")
+              .arg(occupied)
+              .arg(onlyRaster)
+              .arg(onlyCompute)
+              .arg(albedoError)
+              .arg(emissionError)
+              .arg(normalError);
+    qInfo("%s", qPrintable(summary));
+    QVERIFY2(occupied > 1000 && emitting > 100, qPrintable(summary));
+    QVERIFY2(onlyRaster == 0 && onlyCompute == 0, qPrintable(summary));
+    // The running means (common/VoxelWords.glsl) round to 8 bits at every step, in whatever order the
+    // fragments arrive; the two paths only change that order.
+    QVERIFY2(albedoError < 0.05f && emissionError < 0.05f && normalError < 0.1f, qPrintable(summary));
 }
 
 void VoxelizationTest::noGlErrors()
