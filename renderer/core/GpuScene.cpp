@@ -298,13 +298,31 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
 }
 
 void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
-    GLuint vertexBinding, GLuint groupSize) const
+    GLuint vertexBinding, GLuint groupSize, ListedTriangles* listed) const
 {
     program.use();
     DrawOptions unordered = options;
     unordered.from = nullptr;
+    const std::vector<Run> runs = runsOf(unordered);
+    if (listed) {
+        std::vector<std::uint32_t> runTriangles;
+        for (const Run& run : runs)
+            runTriangles.push_back(run.indexCount / 3);
+        listed->reset(runTriangles);
+        for (const Run& run : runs)
+            listed->runMeshes.push_back(run.mesh);
+        listed->indices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 2);
+        listed->commands.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 3);
+    }
     std::size_t bound = m_meshes.size();
-    for (const Run& run : runsOf(unordered)) {
+    GLuint listFirst = 0;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const Run& run = runs[i];
+        if (listed) {
+            program.set("uListRun", GLuint(i));
+            program.set("uListFirst", listFirst);
+            listFirst += 3 * (run.indexCount / 3);
+        }
         if (run.mesh != bound) {
             bindMesh(program, run.mesh, albedoUnit);
             const GpuMesh& gpu = m_meshes[run.mesh];
@@ -320,6 +338,30 @@ void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& 
         program.set("uTriangleCount", triangles);
         glDispatchCompute((triangles + groupSize - 1) / groupSize, 1, 1);
     }
+    glBindVertexArray(0);
+}
+
+void GpuScene::drawListed(const gl::Program& program, const ListedTriangles& listed, GLuint albedoUnit) const
+{
+    program.use();
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, listed.commands.id());
+    // Each mesh's vertex array takes the listed indices for its draws and gets its own back after them.
+    std::size_t bound = m_meshes.size();
+    for (std::size_t i = 0; i < listed.runMeshes.size(); ++i) {
+        const std::size_t mesh = listed.runMeshes[i];
+        if (mesh != bound) {
+            if (bound < m_meshes.size())
+                glVertexArrayElementBuffer(m_meshes[bound].vao.id(), m_meshes[bound].indices.id());
+            bindMesh(program, mesh, albedoUnit);
+            glVertexArrayElementBuffer(m_meshes[mesh].vao.id(), listed.indices.id());
+            bound = mesh;
+        }
+        glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(i * ListedTriangles::kCommandWords * sizeof(std::uint32_t)));
+    }
+    if (bound < m_meshes.size())
+        glVertexArrayElementBuffer(m_meshes[bound].vao.id(), m_meshes[bound].indices.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glBindVertexArray(0);
 }
 

@@ -3,6 +3,7 @@
 #include "core/AreaLightSet.h"
 #include "core/ClosedSurface.h"
 #include "core/Frustum.h"
+#include "core/ListedTriangles.h"
 #include "core/MeshClusters.h"
 #include "gl/Buffer.h"
 #include "gl/Program.h"
@@ -69,10 +70,14 @@ public:
      * triangle of what draw() would draw with the same options (its `from` is ignored). Per run of triangles
      * it sets the uniforms draw() sets, binds the mesh's vertices (eight floats each: position, normal, uv)
      * and indices as storage buffers `vertexBinding` and `vertexBinding + 1`, and sets uFirstIndex,
-     * uTriangleCount and uVertexCount.
+     * uTriangleCount and uVertexCount. With `listed`, the shader may list triangles for drawListed(): its
+     * index buffer and commands are bound as storage buffers `vertexBinding + 2` and `+ 3`, and uListRun (the
+     * run's command) and uListFirst (its segment's first index) are set.
      */
     void dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
-        GLuint vertexBinding, GLuint groupSize) const;
+        GLuint vertexBinding, GLuint groupSize, ListedTriangles* listed = nullptr) const;
+    /** Draws what a dispatchTriangles() listed, run by run, with the uniforms draw() sets. */
+    void drawListed(const gl::Program& program, const ListedTriangles& listed, GLuint albedoUnit) const;
     /**
      * Binds the material table (shaders/common/MaterialTable.glsl) to texture unit `unit`: the per-material
      * values the g-buffer does not store per pixel, found through the material index it does.

@@ -286,17 +286,21 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
             program.set("uRegionHi", region.hi);
             program.set("uGroupSize", OccupiedCellList::kGroupSize);
         };
-        if (smallByCompute) {
-            const gl::Program& small = voxelizer(
-                frame, { emissive, textured, frame.settings.conservativeVoxelization, Path::SmallByCompute });
-            setUniforms(small);
-            frame.scene.dispatchTriangles(small, options, 0, kVertexBinding, kTriangleGroupSize);
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        const gl::Program& raster = voxelizer(frame, { emissive, textured, conservative, false });
+        if (!smallByCompute) {
+            setUniforms(raster);
+            frame.scene.draw(raster, options, 0);
+            continue;
         }
-        const gl::Program& program = voxelizer(frame,
-            { emissive, textured, conservative, smallByCompute ? Path::LargeByRaster : Path::AllByRaster });
-        setUniforms(program);
-        frame.scene.draw(program, options, 0);
+        const gl::Program& small
+            = voxelizer(frame, { emissive, textured, frame.settings.conservativeVoxelization, true });
+        setUniforms(small);
+        frame.scene.dispatchTriangles(
+            small, options, 0, kVertexBinding, kTriangleGroupSize, &m_largeTriangles);
+        glMemoryBarrier(
+            GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
+        setUniforms(raster);
+        frame.scene.drawListed(raster, m_largeTriangles, 0);
     }
     if (nvConservative)
         glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
@@ -313,7 +317,7 @@ const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, const VoxelizerV
     // conservative tests in every variant, chosen by uniforms, the atrium's voxelization took about a fifth
     // longer on llvmpipe in three pairs of four (docs/BENCHMARKS.md).
     std::vector<std::string> defines;
-    std::string name = variant.path == Path::SmallByCompute ? "voxelize small triangles" : "voxelize";
+    std::string name = variant.smallByCompute ? "voxelize small triangles" : "voxelize";
     if (variant.emissive) {
         defines.emplace_back("EMISSIVE");
         name += " (emissive)";
@@ -330,12 +334,8 @@ const gl::Program& VoxelizePass::voxelizer(FrameContext& frame, const VoxelizerV
         defines.emplace_back("CONSERVATIVE");
         name += ", conservative";
     }
-    if (variant.path == Path::SmallByCompute)
+    if (variant.smallByCompute)
         return frame.shaders.program({ name, { "voxelize/VoxelizeSmall.comp" }, defines });
-    if (variant.path == Path::LargeByRaster) {
-        defines.emplace_back("SMALL_BY_COMPUTE");
-        name += ", large triangles";
-    }
     return frame.shaders.program(
         { name, { "voxelize/Voxelize.vert", "voxelize/Voxelize.geom", "voxelize/Voxelize.frag" }, defines });
 }

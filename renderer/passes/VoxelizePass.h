@@ -52,25 +52,21 @@ private:
     /** Marks the voxels reached as resolved (voxelize/Resolve.comp). */
     void resolve(FrameContext& frame, const OccupiedCellList& touched);
 
-    /** Which triangles a voxelizer program takes, and how. */
-    enum class Path {
-        AllByRaster, ///< every triangle through the geometry shader and the rasteriser
-        SmallByCompute, ///< triangles of a few pixels, in a compute shader (voxelize/VoxelizeSmall.comp)
-        LargeByRaster, ///< the others, through the rasteriser
-    };
     struct VoxelizerVariant {
         bool emissive; ///< for meshes whose material emits
         bool textured; ///< for meshes whose material has an albedo texture
         bool conservative; ///< triangles enlarged by the pixel square in the shader
-        Path path;
+        /// The compute shader for triangles of a few pixels, which lists the others for the rasteriser
+        /// (voxelize/VoxelizeSmall.comp), instead of the geometry shader and the rasteriser.
+        bool smallByCompute;
     };
     /** The voxelizer's program for a variant, into a grid with an emission volume or without. */
     static const gl::Program& voxelizer(FrameContext& frame, const VoxelizerVariant& variant);
     /** Whether the voxelization's settings differ from the last full rebuild's. */
     bool modeChanged(const FrameContext& frame) const;
 
-    /// Storage buffers of the mesh's vertices and indices for the compute path (the occupied list takes 0,
-    /// 1).
+    /// Storage buffers of the mesh's vertices and indices for the compute path, then of the triangles it
+    /// lists (the occupied list takes 0 and 1).
     static constexpr GLuint kVertexBinding = 2;
     static constexpr GLuint kTriangleGroupSize = 64; ///< VoxelizeSmall.comp's local_size_x
 
@@ -84,6 +80,7 @@ private:
     std::uint64_t m_albedoSerial = 0; ///< the albedo texture m_framebuffer was made for
     bool m_conservative = false; ///< the voxelization mode of the last full rebuild
     bool m_smallByCompute = false; ///< and whether its small triangles went through the compute path
+    ListedTriangles m_largeTriangles; ///< what the compute path left to the rasteriser, per draw
     /// Where the grid was: a clip level follows the camera (core/ClipmapLayout) and is redone when it moves.
     VoxelGridFrame m_grid;
     VoxelGridFrame m_brickGrid; ///< the grid the bricks were allocated for

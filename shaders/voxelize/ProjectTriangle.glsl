@@ -5,8 +5,9 @@
 #include "common/ConeMath.glsl"
 
 // Triangles whose pixel bounds (conservative enlargement included) span at most this many pixels on both axes
-// are voxelized by VoxelizeSmall.comp when the pass asks for it (passes/VoxelizePass): rasterising a triangle
-// of a pixel or two costs llvmpipe a setup and a mostly idle block of fragment lanes.
+// are voxelized by VoxelizeSmall.comp when the pass asks for it (passes/VoxelizePass), which lists the others
+// for the rasteriser: rasterising a triangle of a pixel or two costs llvmpipe a setup and a mostly idle block
+// of fragment lanes.
 const float kSmallTrianglePixels = 5.5;
 
 struct ProjectedTriangle {

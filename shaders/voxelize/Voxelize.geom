@@ -1,7 +1,7 @@
 // Projects each triangle along its dominant axis so it covers as many pixels (voxel columns) as possible,
 // and, in conservative mode, enlarges it by the pixel square so every voxel it touches gets a fragment
-// (voxelize/ProjectTriangle.glsl). With SMALL_BY_COMPUTE, triangles small enough for VoxelizeSmall.comp are
-// left to it.
+// (voxelize/ProjectTriangle.glsl). Where small triangles go through VoxelizeSmall.comp, the pass draws only the
+// triangles it listed.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
@@ -30,13 +30,6 @@ void main()
     ProjectedTriangle t;
     if (!projectTriangle(vGrid[0], vGrid[1], vGrid[2], t))
         return;
-#ifdef SMALL_BY_COMPUTE
-    // The compute path takes triangles up to kSmallTrianglePixels; this one leaves a hundredth of a pixel's
-    // overlap, since the two shaders' arithmetic may round differently: a triangle on the boundary is then
-    // voxelized twice (its share in a few voxels' means doubled) rather than not at all.
-    if (t.extentPixels <= kSmallTrianglePixels - 0.01)
-        return;
-#endif
     for (int i = 0; i < 3; ++i) {
         gl_Position = vec4(t.q[i], t.z[i], 1.0);
         gDepth = (t.z[i] * 0.5 + 0.5) * float(uResolution);

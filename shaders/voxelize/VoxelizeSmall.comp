@@ -3,7 +3,8 @@
 // and the pixel centres inside it, within its pixel bounds, get what Voxelize.frag gives a fragment there.
 // llvmpipe spends a triangle setup and a block of mostly idle fragment lanes on a triangle of a pixel or two;
 // here it is a few loop iterations in one lane (docs/BENCHMARKS.md, "Small triangles voxelized in a compute
-// shader"). Larger triangles return at once: the geometry shader's SMALL_BY_COMPUTE variant takes those.
+// shader"). Larger triangles are listed for the rasteriser (core/ListedTriangles), which then draws only
+// those: the vertex and geometry shaders do not run for the small ones either.
 // Variants as Voxelize.frag's (passes/VoxelizePass::voxelizer).
 layout(local_size_x = 64) in;
 
@@ -13,6 +14,13 @@ layout(std430, binding = 3) readonly buffer Indices { uint uIndices[]; };
 uniform uint uFirstIndex;
 uniform uint uTriangleCount;
 uniform uint uVertexCount;
+
+// Where the larger triangles go: this run's segment of an index buffer and its draw command, whose count
+// (the first of five words) each listed triangle raises by three.
+layout(std430, binding = 4) writeonly buffer ListedIndices { uint uListed[]; };
+layout(std430, binding = 5) buffer ListedCommands { uint uCommands[]; };
+uniform uint uListRun;
+uniform uint uListFirst;
 
 uniform mat4 uModel;
 uniform mat4 uNormalMatrix;
@@ -59,6 +67,16 @@ float edgeFunction(vec2 a, vec2 b, vec2 c)
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+// Whether a pixel centre exactly on the edge from a to b of a triangle wound counter-clockwise is inside it:
+// on its left and top edges, so that of two triangles sharing an edge one takes the centres on it, as a
+// rasteriser's fill rule does (neither would leave a hole without conservative enlargement, both would count
+// twice in the voxels' means).
+bool takesTies(vec2 a, vec2 b)
+{
+    vec2 d = b - a;
+    return d.y < 0.0 || (d.y == 0.0 && d.x < 0.0);
+}
+
 void main()
 {
     uint triangle = gl_GlobalInvocationID.x;
@@ -70,8 +88,15 @@ void main()
         return; // the rasteriser draws nothing sensible there either
     Corner c0 = cornerAt(index.x), c1 = cornerAt(index.y), c2 = cornerAt(index.z);
     ProjectedTriangle t;
-    if (!projectTriangle(c0.grid, c1.grid, c2.grid, t) || !(t.extentPixels <= kSmallTrianglePixels))
+    if (!projectTriangle(c0.grid, c1.grid, c2.grid, t))
         return;
+    if (!(t.extentPixels <= kSmallTrianglePixels)) {
+        uint slot = uListFirst + atomicAdd(uCommands[5u * uListRun], 3u);
+        uListed[slot] = index.x;
+        uListed[slot + 1u] = index.y;
+        uListed[slot + 2u] = index.z;
+        return;
+    }
 
     // The corners the rasteriser would get, in window pixels, and each corner's weight as a plane over them.
     vec2 w0 = (t.q[0] * 0.5 + 0.5) * float(uResolution);
@@ -81,6 +106,12 @@ void main()
     if (!(abs(area) > 0.0))
         return;
     float inverseArea = 1.0 / area;
+    // Which edges keep the pixel centres lying exactly on them, counter-clockwise: x for the edge w1 -> w2
+    // (opposite corner 0), y for w2 -> w0, z for w0 -> w1.
+    bool counterClockwise = area > 0.0;
+    bvec3 ties = bvec3(counterClockwise ? takesTies(w1, w2) : takesTies(w2, w1),
+        counterClockwise ? takesTies(w2, w0) : takesTies(w0, w2),
+        counterClockwise ? takesTies(w0, w1) : takesTies(w1, w0));
     // d(weight)/dx and d(weight)/dy of the three corners' weights: the derivatives a fragment's quad would see.
     vec3 dWeightDx = vec3(w1.y - w2.y, w2.y - w0.y, w0.y - w1.y) * inverseArea;
     vec3 dWeightDy = vec3(w2.x - w1.x, w0.x - w2.x, w1.x - w0.x) * inverseArea;
@@ -107,7 +138,8 @@ void main()
             vec3 weight = vec3(edgeFunction(w1, w2, centre), edgeFunction(w2, w0, centre),
                               edgeFunction(w0, w1, centre))
                 * inverseArea;
-            if (any(lessThan(weight, vec3(0.0))))
+            if (any(lessThan(weight, vec3(0.0))) || (weight.x == 0.0 && !ties.x) || (weight.y == 0.0 && !ties.y)
+                || (weight.z == 0.0 && !ties.z))
                 continue;
             vec2 uv = weight.x * c0.uv + weight.y * c1.uv + weight.z * c2.uv;
 #ifdef TEXTURED
@@ -118,7 +150,11 @@ void main()
             vec3 normal = weight.x * c0.normal + weight.y * c1.normal + weight.z * c2.normal;
             float len = length(normal);
             normal = len > 1e-20 ? normal / len : vec3(0.0);
-            addToColumn(ivec2(x, y), dot(weight, depths), spread, t.axis, albedo, normal, emission);
+            // From the first corner, as the rasteriser's plane equations go: a triangle at one depth (a wall
+            // on a voxel boundary) gets exactly its corners' depth, where weights summing to a hair under
+            // one would put it in the voxel below.
+            float depth = depths.x + weight.y * (depths.y - depths.x) + weight.z * (depths.z - depths.x);
+            addToColumn(ivec2(x, y), depth, spread, t.axis, albedo, normal, emission);
         }
     }
 }
