@@ -298,12 +298,13 @@ void GpuScene::draw(const gl::Program& program, const DrawOptions& options, GLui
 }
 
 void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
-    GLuint vertexBinding, GLuint groupSize, ListedTriangles* listed) const
+    const TriangleDispatch& dispatch) const
 {
     program.use();
     DrawOptions unordered = options;
     unordered.from = nullptr;
     const std::vector<Run> runs = runsOf(unordered);
+    ListedTriangles* const listed = dispatch.listed;
     if (listed) {
         std::vector<std::uint32_t> runTriangles;
         for (const Run& run : runs)
@@ -311,32 +312,37 @@ void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& 
         listed->reset(runTriangles);
         for (const Run& run : runs)
             listed->runMeshes.push_back(run.mesh);
-        listed->indices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 2);
-        listed->commands.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 3);
+        listed->indices.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding + 2);
+        listed->commands.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding + 3);
     }
     std::size_t bound = m_meshes.size();
     GLuint listFirst = 0;
+    // A run of more triangles than maxGroups workgroups take (a scanned model of millions) goes in parts,
+    // which list into the same command.
+    const GLuint perDispatch = std::max(dispatch.maxGroups, 1u) * dispatch.groupSize;
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const Run& run = runs[i];
+        const GLuint runTriangles = run.indexCount / 3;
         if (listed) {
             program.set("uListRun", GLuint(i));
             program.set("uListFirst", listFirst);
-            listFirst += 3 * (run.indexCount / 3);
+            listFirst += 3 * runTriangles;
         }
         if (run.mesh != bound) {
             bindMesh(program, run.mesh, albedoUnit);
             const GpuMesh& gpu = m_meshes[run.mesh];
-            gpu.vertices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding);
-            gpu.indices.bindBase(GL_SHADER_STORAGE_BUFFER, vertexBinding + 1);
+            gpu.vertices.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding);
+            gpu.indices.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding + 1);
             program.set("uVertexCount", GLuint(m_scene.meshes[run.mesh].positions.size()));
             bound = run.mesh;
         }
-        const GLuint triangles = run.indexCount / 3;
-        if (triangles == 0)
-            continue;
-        program.set("uFirstIndex", GLuint(run.firstIndex));
-        program.set("uTriangleCount", triangles);
-        glDispatchCompute((triangles + groupSize - 1) / groupSize, 1, 1);
+        for (GLuint done = 0; done < runTriangles;) {
+            const GLuint triangles = std::min(runTriangles - done, perDispatch);
+            program.set("uFirstIndex", GLuint(run.firstIndex + 3 * done));
+            program.set("uTriangleCount", triangles);
+            glDispatchCompute((triangles + dispatch.groupSize - 1) / dispatch.groupSize, 1, 1);
+            done += triangles;
+        }
     }
     glBindVertexArray(0);
 }

@@ -39,6 +39,15 @@ struct Viewpoint {
     float nearRadius = 0.0f;
 };
 
+/** How GpuScene::dispatchTriangles runs a compute shader over triangles. */
+struct TriangleDispatch {
+    GLuint vertexBinding = 0; ///< the first of the storage buffers it binds
+    GLuint groupSize = 64; ///< the shader's local_size_x
+    ListedTriangles* listed = nullptr; ///< where the shader may list triangles for GpuScene::drawListed
+    /// Most workgroups a dispatch: a run that needs more goes in parts (GL promises at least 65,535).
+    GLuint maxGroups = 65535;
+};
+
 /** What one GpuScene::draw covers and in which order. */
 struct DrawOptions {
     MeshFilter layer = MeshFilter::All;
@@ -66,16 +75,16 @@ public:
      */
     void draw(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit) const;
     /**
-     * Runs `program`, a compute shader of `groupSize` invocations a workgroup, with one invocation per
-     * triangle of what draw() would draw with the same options (its `from` is ignored). Per run of triangles
-     * it sets the uniforms draw() sets, binds the mesh's vertices (eight floats each: position, normal, uv)
-     * and indices as storage buffers `vertexBinding` and `vertexBinding + 1`, and sets uFirstIndex,
-     * uTriangleCount and uVertexCount. With `listed`, the shader may list triangles for drawListed(): its
-     * index buffer and commands are bound as storage buffers `vertexBinding + 2` and `+ 3`, and uListRun (the
-     * run's command) and uListFirst (its segment's first index) are set.
+     * Runs `program`, a compute shader of `dispatch.groupSize` invocations a workgroup, with one invocation
+     * per triangle of what draw() would draw with the same options (its `from` is ignored). Per run of
+     * triangles it sets the uniforms draw() sets, binds the mesh's vertices (eight floats each: position,
+     * normal, uv) and indices as storage buffers `dispatch.vertexBinding` and the next, and sets uFirstIndex,
+     * uTriangleCount and uVertexCount. With `dispatch.listed`, the shader may list triangles for
+     * drawListed(): its index buffer and commands are bound as the two storage buffers after those, and
+     * uListRun (the run's command) and uListFirst (its segment's first index) are set.
      */
     void dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
-        GLuint vertexBinding, GLuint groupSize, ListedTriangles* listed = nullptr) const;
+        const TriangleDispatch& dispatch) const;
     /** Draws what a dispatchTriangles() listed, run by run, with the uniforms draw() sets. */
     void drawListed(const gl::Program& program, const ListedTriangles& listed, GLuint albedoUnit) const;
     /**

@@ -295,8 +295,11 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
         const gl::Program& small
             = voxelizer(frame, { emissive, textured, frame.settings.conservativeVoxelization, true });
         setUniforms(small);
-        frame.scene.dispatchTriangles(
-            small, options, 0, kVertexBinding, kTriangleGroupSize, &m_largeTriangles);
+        TriangleDispatch dispatch;
+        dispatch.vertexBinding = kVertexBinding;
+        dispatch.groupSize = kTriangleGroupSize;
+        dispatch.listed = &m_largeTriangles;
+        frame.scene.dispatchTriangles(small, options, 0, dispatch);
         glMemoryBarrier(
             GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_ELEMENT_ARRAY_BARRIER_BIT);
         setUniforms(raster);
