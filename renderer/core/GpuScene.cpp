@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace vct::render {
 
@@ -319,7 +320,9 @@ void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& 
     GLuint listFirst = 0;
     // A run of more triangles than maxGroups workgroups take (a scanned model of millions) goes in parts,
     // which list into the same command.
-    const GLuint perDispatch = std::max(dispatch.maxGroups, 1u) * dispatch.groupSize;
+    const GLuint groupSize = std::max(dispatch.groupSize, 1u);
+    const GLuint perDispatch = GLuint(std::min<std::uint64_t>(
+        std::uint64_t(std::max(dispatch.maxGroups, 1u)) * groupSize, std::numeric_limits<GLuint>::max()));
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const Run& run = runs[i];
         const GLuint runTriangles = run.indexCount / 3;
@@ -340,7 +343,7 @@ void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& 
             const GLuint triangles = std::min(runTriangles - done, perDispatch);
             program.set("uFirstIndex", GLuint(run.firstIndex + 3 * done));
             program.set("uTriangleCount", triangles);
-            glDispatchCompute((triangles + dispatch.groupSize - 1) / dispatch.groupSize, 1, 1);
+            glDispatchCompute(GLuint((std::uint64_t(triangles) + groupSize - 1) / groupSize), 1, 1);
             done += triangles;
         }
     }

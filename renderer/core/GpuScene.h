@@ -79,9 +79,10 @@ public:
      * per triangle of what draw() would draw with the same options (its `from` is ignored). Per run of
      * triangles it sets the uniforms draw() sets, binds the mesh's vertices (eight floats each: position,
      * normal, uv) and indices as storage buffers `dispatch.vertexBinding` and the next, and sets uFirstIndex,
-     * uTriangleCount and uVertexCount. With `dispatch.listed`, the shader may list triangles for
-     * drawListed(): its index buffer and commands are bound as the two storage buffers after those, and
-     * uListRun (the run's command) and uListFirst (its segment's first index) are set.
+     * uTriangleCount and uVertexCount. A shader that lists triangles for drawListed() needs `dispatch.listed`
+     * (without it, it would write to whatever buffers are bound there): its index buffer and commands are
+     * bound as the two storage buffers after those, and uListRun (the run's command) and uListFirst (its
+     * segment's first index) are set.
      */
     void dispatchTriangles(const gl::Program& program, const DrawOptions& options, GLuint albedoUnit,
         const TriangleDispatch& dispatch) const;

@@ -18,6 +18,8 @@ void ListedTriangles::reset(const std::vector<std::uint32_t>& runTriangles)
         indices = gl::Buffer(indexBytes, nullptr, 0);
     if (!commands || commands.size() < commandBytes)
         commands = gl::Buffer(commandBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // The counts the last listing's shader raised are rewritten here: its writes come first.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (commandBytes > 0)
         commands.upload(words.data(), commandBytes);
     runMeshes.clear();

@@ -265,9 +265,11 @@ void VoxelizePass::accumulate(FrameContext& frame, MeshFilter layer, const Voxel
     const LatticePlacement lattice = latticeOf(frame);
     // With hardware conservative raster the geometry shader need not enlarge triangles itself.
     const bool conservative = frame.settings.conservativeVoxelization && !nvConservative;
-    // Hardware conservative rasterisation covers what the geometry shader's enlargement does; the compute
-    // path enlarges as that does, so it serves either way.
-    const bool smallByCompute = frame.settings.smallTrianglesByCompute;
+    // The compute path is held to llvmpipe's rasteriser with the geometry shader's enlargement. Hardware
+    // conservative rasterisation covers the same pixels but its fragments spread no depth: mixing the two
+    // would put small and large triangles in differently deep voxels, and a GPU with that extension
+    // rasterises small triangles cheaply anyway.
+    const bool smallByCompute = frame.settings.smallTrianglesByCompute && !nvConservative;
     for (const int kind : { 0, 1, 2, 3 }) {
         const bool emissive = kind & 1, textured = kind & 2;
         DrawOptions options;

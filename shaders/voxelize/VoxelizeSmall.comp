@@ -47,7 +47,8 @@ struct Corner {
     vec2 uv;
 };
 
-// What Voxelize.vert computes for a vertex, in the same operations (the same voxels to the last bit).
+// What Voxelize.vert computes for a vertex, in the same operations, so that both paths put a corner in the
+// same place (GLSL does not promise the same rounding in two stages, which tst_Voxelization checks on llvmpipe).
 Corner cornerAt(uint index)
 {
     uint base = 8u * index;
@@ -67,14 +68,16 @@ float edgeFunction(vec2 a, vec2 b, vec2 c)
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
-// Whether a pixel centre exactly on the edge from a to b of a triangle wound counter-clockwise is inside it:
-// on its left and top edges, so that of two triangles sharing an edge one takes the centres on it, as a
-// rasteriser's fill rule does (neither would leave a hole without conservative enlargement, both would count
-// twice in the voxels' means).
+// Whether a pixel centre exactly on the edge from a to b of a triangle wound counter-clockwise (window
+// coordinates, y up) is inside it: on its left and bottom edges, so that of two triangles sharing an edge one
+// takes the centres on it (neither would leave a hole without conservative enlargement, both would count twice
+// in the voxels' means). GL leaves the rule to the implementation; this is the one llvmpipe applies to a
+// framebuffer object such as the voxelizer's, which tst_Voxelization::edgesThroughPixelCentresMatchTheRasterizer
+// holds the two paths to (the top-left rule failed it).
 bool takesTies(vec2 a, vec2 b)
 {
     vec2 d = b - a;
-    return d.y < 0.0 || (d.y == 0.0 && d.x < 0.0);
+    return d.y < 0.0 || (d.y == 0.0 && d.x > 0.0);
 }
 
 void main()
@@ -85,7 +88,7 @@ void main()
     uint first = uFirstIndex + 3u * triangle;
     uvec3 index = uvec3(uIndices[first], uIndices[first + 1u], uIndices[first + 2u]);
     if (any(greaterThanEqual(index, uvec3(uVertexCount))))
-        return; // the rasteriser draws nothing sensible there either
+        return; // an index past the mesh's vertices: drawn, what the GL made of it would be undefined
     Corner c0 = cornerAt(index.x), c1 = cornerAt(index.y), c2 = cornerAt(index.z);
     ProjectedTriangle t;
     if (!projectTriangle(c0.grid, c1.grid, c2.grid, t))
@@ -150,7 +153,7 @@ void main()
             vec3 normal = weight.x * c0.normal + weight.y * c1.normal + weight.z * c2.normal;
             float len = length(normal);
             normal = len > 1e-20 ? normal / len : vec3(0.0);
-            // From the first corner, as the rasteriser's plane equations go: a triangle at one depth (a wall
+            // From the first corner, as llvmpipe's plane equations go: a triangle at one depth (a wall
             // on a voxel boundary) gets exactly its corners' depth, where weights summing to a hair under
             // one would put it in the voxel below.
             float depth = depths.x + weight.y * (depths.y - depths.x) + weight.z * (depths.z - depths.x);

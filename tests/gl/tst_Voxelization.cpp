@@ -123,6 +123,8 @@ private slots:
     void smallTrianglesMatchTheRasterizer_data();
     void smallTrianglesMatchTheRasterizer();
     void atriumVoxelsTheSameEitherWay();
+    void edgesThroughPixelCentresMatchTheRasterizer_data();
+    void edgesThroughPixelCentresMatchTheRasterizer();
     void noGlErrors();
 
 private:
@@ -357,6 +359,7 @@ void VoxelizationTest::smallTrianglesMatchTheRasterizer_data()
     QTest::newRow("conservative") << true << false;
     QTest::newRow("plain") << false << false;
     QTest::newRow("conservative, textured") << true << true;
+    QTest::newRow("plain, textured") << false << true;
 }
 
 void VoxelizationTest::smallTrianglesMatchTheRasterizer()
@@ -385,6 +388,7 @@ void VoxelizationTest::smallTrianglesMatchTheRasterizer()
             }
         scene.textures.push_back(stripes);
         grey.albedoTexture = 0;
+        lamp.albedoTexture = 0; // the emissive and textured variant too
     }
     scene.materials = { grey, lamp, wall };
     scene.meshes.push_back(makeSphere({ 6.3f, 7.9f, 8.1f }, 3.7f, 40, 0));
@@ -468,6 +472,55 @@ void VoxelizationTest::atriumVoxelsTheSameEitherWay()
                                 .arg(onlyRaster)
                                 .arg(onlyCompute);
     QVERIFY2(occupied > 50000 && onlyRaster == 0 && onlyCompute == 0, qPrintable(summary));
+}
+
+void VoxelizationTest::edgesThroughPixelCentresMatchTheRasterizer_data()
+{
+    QTest::addColumn<bool>("conservative");
+    QTest::addColumn<float>("offset");
+    // Plain: corners on pixel centres, so edges (along the axes and the diagonals) pass through rows of them.
+    QTest::newRow("plain, corners on pixel centres") << false << 0.5f;
+    // Conservative: corners on voxel corners, so the enlarged edges along the axes land on pixel centres.
+    QTest::newRow("conservative, corners on voxel corners") << true << 0.0f;
+}
+
+void VoxelizationTest::edgesThroughPixelCentresMatchTheRasterizer()
+{
+    // A 10 x 10 voxel plane of 2 x 2 voxel quads, each split along a diagonal (both ways, alternately), in
+    // the plane z = 5.3: every triangle small enough for the compute path, every shared edge through pixel
+    // centres or, enlarged, on them. A centre exactly on an edge must go to the same one of its two triangles
+    // as the rasteriser's fill rule gives it, or neither path's voxels would match the other's.
+    QFETCH(bool, conservative);
+    QFETCH(float, offset);
+    std::vector<glm::vec3> triangles;
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) {
+            const float x = 3.0f + offset + 2.0f * float(i), y = 3.0f + offset + 2.0f * float(j);
+            const glm::vec3 a(x, y, 5.3f), b(x + 2.0f, y, 5.3f), c(x + 2.0f, y + 2.0f, 5.3f),
+                d(x, y + 2.0f, 5.3f);
+            if ((i + j) % 2 == 0)
+                triangles.insert(triangles.end(), { a, b, c, a, c, d });
+            else
+                triangles.insert(triangles.end(), { a, b, d, b, c, d });
+        }
+    std::set<Voxel> voxels[2];
+    for (const bool compute : { false, true }) {
+        render::Scene scene;
+        scene.materials.push_back(render::Material {});
+        scene.meshes.push_back(test::makeTriangles(triangles));
+        render::RenderSettings settings;
+        settings.voxelResolution = 16;
+        settings.conservativeVoxelization = conservative;
+        settings.smallTrianglesByCompute = compute;
+        m_gl.renderer->setSettings(settings);
+        m_gl.renderer->setScene(scene);
+        m_gl.renderer->setGridBounds(test::box(glm::vec3(1.0f), glm::vec3(15.0f)));
+        m_gl.renderer->renderFrame(render::Camera {}, 8, 8);
+        voxels[compute] = occupiedVoxels(*m_gl.renderer);
+    }
+    QVERIFY(voxels[0].size() > 50);
+    QVERIFY2(voxels[0] == voxels[1],
+        qPrintable(QString("rasterised %1\ncompute path %2").arg(describe(voxels[0]), describe(voxels[1]))));
 }
 
 void VoxelizationTest::noGlErrors()
