@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace vct::render {
 
@@ -307,12 +308,13 @@ void GpuScene::dispatchTriangles(const gl::Program& program, const DrawOptions& 
     const std::vector<Run> runs = runsOf(unordered);
     ListedTriangles* const listed = dispatch.listed;
     if (listed) {
+        std::vector<std::size_t> meshes;
         std::vector<std::uint32_t> runTriangles;
-        for (const Run& run : runs)
+        for (const Run& run : runs) {
+            meshes.push_back(run.mesh);
             runTriangles.push_back(run.indexCount / 3);
-        listed->reset(runTriangles);
-        for (const Run& run : runs)
-            listed->runMeshes.push_back(run.mesh);
+        }
+        listed->reset(std::move(meshes), runTriangles);
         listed->indices.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding + 2);
         listed->commands.bindBase(GL_SHADER_STORAGE_BUFFER, dispatch.vertexBinding + 3);
     }

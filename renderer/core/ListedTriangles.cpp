@@ -1,8 +1,10 @@
 #include "core/ListedTriangles.h"
 
+#include <utility>
+
 namespace vct::render {
 
-void ListedTriangles::reset(const std::vector<std::uint32_t>& runTriangles)
+void ListedTriangles::reset(std::vector<std::size_t> meshes, const std::vector<std::uint32_t>& runTriangles)
 {
     std::vector<std::uint32_t> words;
     words.reserve(runTriangles.size() * kCommandWords);
@@ -22,7 +24,7 @@ void ListedTriangles::reset(const std::vector<std::uint32_t>& runTriangles)
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (commandBytes > 0)
         commands.upload(words.data(), commandBytes);
-    runMeshes.clear();
+    runMeshes = std::move(meshes);
 }
 
 } // namespace vct::render

@@ -21,8 +21,10 @@ struct ListedTriangles {
     gl::Buffer commands; ///< kCommandWords per run
     std::vector<std::size_t> runMeshes; ///< the mesh each run draws, in order
 
-    /** Starts a listing over runs of these triangle counts: buffers large enough, every count zero. */
-    void reset(const std::vector<std::uint32_t>& runTriangles);
+    /**
+     * Starts a listing over runs of these meshes and triangle counts: buffers large enough, every count zero.
+     */
+    void reset(std::vector<std::size_t> meshes, const std::vector<std::uint32_t>& runTriangles);
 };
 
 } // namespace vct::render
