@@ -682,17 +682,20 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
             "no grid " + std::to_string(grid) + " (there are " + std::to_string(gridCount()) + ")");
     m_state->ensureInspectionMipsOf(grid);
     const VoxelVolume& v = m_state->volumeOf(grid);
-    static const char* const kDirectional[6]
-        = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
-    for (std::size_t d = 0; d < 6; ++d)
-        if (channel == kDirectional[d]) {
-            if (!v.directional || level < 1 || level - 1 >= v.directional.levels())
+    static const char* const kDirections[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
+    for (const bool bounced : { false, true })
+        for (std::size_t d = 0; d < 6; ++d) {
+            if (channel != std::string(bounced ? "bounced" : "radiance") + kDirections[d])
+                continue;
+            const gl::Texture& chains = bounced ? v.bouncedDirectional : v.directional;
+            if (!chains || level < 1 || level - 1 >= chains.levels())
                 throw std::invalid_argument("no " + channel + " level " + std::to_string(level)
-                    + " (needs anisotropic mips, levels from 1)");
+                    + (bounced ? " (needs anisotropic mips and bounces in the voxels, levels from 1)"
+                               : " (needs anisotropic mips, levels from 1)"));
             // Tile d starts d strides in (scene/DirectionalStackLayout.h).
-            size = std::max(1, v.directional.width() >> (level - 1));
+            size = std::max(1, chains.width() >> (level - 1));
             std::vector<float> data(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4);
-            glGetTextureSubImage(v.directional.id(), level - 1, 0, 0,
+            glGetTextureSubImage(chains.id(), level - 1, 0, 0,
                 GLint(d) * DirectionalStackLayout::of(v.frame.resolution).stride(level - 1), size, size, size,
                 GL_RGBA, GL_FLOAT, GLsizei(data.size() * sizeof(float)), data.data());
             return data;

@@ -122,8 +122,9 @@ public:
     RadianceImage readFrame() const;
     /**
      * Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission",
-     * "radiance", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels 1..N); of
-     * grid @p grid (gridCount()).
+     * "radiance", "bounced", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels
+     * 1..N), and "bounced+x" ... "bounced-z" (the bounced volume's chains, which cones trace when the voxels
+     * carry bounces); of grid @p grid (gridCount()).
      */
     std::vector<float> readVoxels(const std::string& channel, int level, int& size, int grid = 0) const;
 

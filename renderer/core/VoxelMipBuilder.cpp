@@ -66,14 +66,14 @@ const OccupiedCellList& VoxelMipBuilder::cellsOfSize(int cellVoxels) const
     return m_levelCells[std::size_t(level - 1)];
 }
 
-void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume)
+void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume, int firstLevel)
 {
     if (!m_boxProgram)
         m_boxProgram = &shaders.program({ "downsample", { "mipmap/Downsample.comp" }, {} });
     m_boxProgram->use();
     volume.bindUnit(0);
     const int levels = std::min(volume.levels(), int(m_levelCells.size()) + 1);
-    for (int level = 1; level < levels; ++level) {
+    for (int level = std::max(firstLevel, 1); level < levels; ++level) {
         glClearTexImage(volume.id(), level, GL_RGBA, GL_FLOAT, nullptr);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         m_boxProgram->set("uSourceLevel", level - 1);
@@ -83,8 +83,28 @@ void VoxelMipBuilder::buildBox(const ShaderLibrary& shaders, gl::Texture& volume
     }
 }
 
+void VoxelMipBuilder::prepareDirectional(int resolution, gl::Texture& directional)
+{
+    const gl::TextureDesc wanted = directionalDesc(resolution);
+    if (!wanted)
+        return;
+    if (directional.desc() != wanted)
+        throw std::logic_error("the directional chains are not made for this grid");
+    // Every build writes all six chains of every listed cell, so what a build leaves unwritten (the cells
+    // above no voxel, the gaps between tiles, which must read empty) stays as cleared until the cells are
+    // listed again or the texture is new. The bounce solve builds these chains four times or more over the
+    // same cells, and the clears of a grid's whole levels took about a third of each build.
+    if (directional.serial() == m_clearedSerial && m_listing == m_clearedListing)
+        return;
+    m_clearedSerial = directional.serial();
+    m_clearedListing = m_listing;
+    for (int level = 0; level < wanted.levels; ++level)
+        glClearTexImage(directional.id(), level, GL_RGBA, GL_FLOAT, nullptr);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
 void VoxelMipBuilder::buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source,
-    const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional)
+    const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional, int firstLevel)
 {
     if (!m_directionalProgram) {
         m_directionalProgram
@@ -100,21 +120,8 @@ void VoxelMipBuilder::buildDirectional(const ShaderLibrary& shaders, const gl::T
     const gl::TextureDesc wanted = directionalDesc(resolution);
     if (!wanted)
         return;
-    if (directional.desc() != wanted)
-        throw std::logic_error("the directional chains are not made for this grid");
-    const int levels = wanted.levels;
-    // Every build writes all six chains of every listed cell, so what a build leaves unwritten (the cells
-    // above no voxel, the gaps between tiles, which must read empty) stays as cleared until the cells are
-    // listed again or the texture is new. The bounce solve builds these chains four times or more over the
-    // same cells, and the clears of a grid's whole levels took about a third of each build.
-    const bool clear = directional.serial() != m_clearedSerial || m_listing != m_clearedListing;
-    m_clearedSerial = directional.serial();
-    m_clearedListing = m_listing;
-    for (int level = 0; level < levels; ++level) {
-        if (clear) {
-            glClearTexImage(directional.id(), level, GL_RGBA, GL_FLOAT, nullptr);
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-        }
+    prepareDirectional(resolution, directional);
+    for (int level = firstLevel; level < wanted.levels; ++level) {
         // Level 1 of every chain from the isotropic level 0, in one pass over its shared children; later
         // levels of all six chains at once, each tile from the same tile one level finer.
         const gl::Program& first

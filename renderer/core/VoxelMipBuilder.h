@@ -33,16 +33,23 @@ public:
      * one holding a voxel.
      */
     const OccupiedCellList& cellsOfSize(int cellVoxels) const;
-    /** Levels 1..N of @p volume from its level 0. */
-    void buildBox(const ShaderLibrary& shaders, gl::Texture& volume);
+    /** Levels @p firstLevel..N of @p volume, each from the one below (the levels below written already). */
+    void buildBox(const ShaderLibrary& shaders, gl::Texture& volume, int firstLevel = 1);
     /**
      * Six chains (+x, -x, +y, -y, +z, -z; texture level k = grid level k + 1) composited front to back from
      * level 0 of @p source into the tiles of @p directional, made as directionalDesc() says. With
      * @p backFaceNormals (the voxels' normals) each chain leaves out the voxels of one-sided surfaces that
-     * face the way it travels (RenderSettings::dropBackFaces).
+     * face the way it travels (RenderSettings::dropBackFaces). From texture level @p firstLevel on, when the
+     * caller wrote the levels below (after prepareDirectional()).
      */
     void buildDirectional(const ShaderLibrary& shaders, const gl::Texture& source,
-        const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional);
+        const gl::Texture* backFaceNormals, int resolution, gl::Texture& directional, int firstLevel = 0);
+    /**
+     * Clears @p directional's levels where a build would need them cleared (a new texture, or cells listed
+     * again): before a caller writes a level of its own into it (the bounce solve's reinjection writes the
+     * first).
+     */
+    void prepareDirectional(int resolution, gl::Texture& directional);
     /**
      * The six directional chains of a grid of @p resolution: one stack of tiles from grid level 1 (texture
      * level k = grid level k + 1), laid out by scene/DirectionalStackLayout.h; empty for a grid too small.

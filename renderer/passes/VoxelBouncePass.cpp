@@ -5,6 +5,7 @@
 #include "core/LightUniforms.h"
 #include "core/ResourceNames.h"
 #include "core/VolumeShift.h"
+#include "scene/DirectionalStackLayout.h"
 
 #include "bounce/BounceSums.glsl"
 
@@ -383,16 +384,40 @@ void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iterati
     const bool increment = how == Reinjection::AddHigherChange;
     const bool higherBounces = split && how != Reinjection::FirstBounceOnly && !increment;
     std::vector<std::string> defines;
-    if (increment)
+    std::string name = "bounce reinjection";
+    if (increment) {
         defines.emplace_back("INCREMENT");
-    if (higherBounces)
+        name += ", higher bounces' change added";
+    }
+    if (higherBounces) {
         defines.emplace_back("HIGHER_BOUNCES");
-    const gl::Program& program = frame.shaders.program({ std::string("bounce reinjection")
-            + (increment            ? ", higher bounces' change added"
-                    : higherBounces ? ", higher bounces"
-                                    : ""),
-        { "bounce/ReinjectBounce.comp" }, defines });
+        name += ", higher bounces";
+    }
+    // The reinjection writes the first mip level above the voxels it lights (bounce/ReinjectBounce.comp).
+    const bool anisotropic = frame.settings.anisotropicMips;
+    const bool filterDirectional = anisotropic && bool(VoxelMipBuilder::directionalDesc(res));
+    const bool filterBox = !anisotropic && v.bounced.levels() > 1;
+    if (filterDirectional) {
+        defines.emplace_back("FILTER_DIRECTIONAL");
+        name += ", directional filter";
+        if (frame.settings.dropBackFaces) {
+            defines.emplace_back("DROP_BACK_FACES");
+            name += " without back faces";
+        }
+        m_builder.prepareDirectional(res, v.bouncedDirectional);
+        v.bouncedDirectional.bindImage(2, 0, GL_WRITE_ONLY);
+    }
+    if (filterBox) {
+        defines.emplace_back("FILTER_BOX");
+        name += ", box filter";
+        glClearTexImage(v.bounced.id(), 1, GL_RGBA, GL_FLOAT, zero);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        v.bounced.bindImage(2, 1, GL_WRITE_ONLY);
+    }
+    const gl::Program& program = frame.shaders.program({ name, { "bounce/ReinjectBounce.comp" }, defines });
     program.use();
+    if (filterDirectional)
+        program.set("uTileStride", DirectionalStackLayout::of(res).stride(0));
     program.set("uGridOrigin", v.frame.origin);
     program.set("uVoxelSize", v.frame.voxelSize());
     program.set("uCellVoxels", m_cells.cellSize);
@@ -419,12 +444,18 @@ void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iterati
     v.bounceIrradianceBack.bindUnit(kIrradianceBackUnit);
     v.bounced.bindImage(0, 0, GL_READ_WRITE);
     m_sums.bindImage(1, 0, GL_READ_WRITE);
-    for (const OccupiedCellList* voxels : v.occupiedVoxels(frame.scene.hasDynamicMeshes()))
-        voxels->dispatchOverCells();
+    // By blocks of 2^3 voxels: the first level's cells (listCells() lists them above every occupied voxel).
+    m_builder.cellsOfSize(2).dispatchOverCells();
     glMemoryBarrier(
         GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     timed.reset();
-    buildMips(frame);
+    // The levels above the one the reinjection wrote.
+    const PhaseTimes::Scope filtered = m_phases.time(kFilterPhase);
+    if (filterDirectional)
+        m_builder.buildDirectional(frame.shaders, v.bounced,
+            frame.settings.dropBackFaces ? &v.normal : nullptr, res, v.bouncedDirectional, 1);
+    else if (filterBox)
+        m_builder.buildBox(frame.shaders, v.bounced, 2);
 }
 
 std::vector<VoxelBouncePass::Change> VoxelBouncePass::readChanges(int first, int count)

@@ -18,6 +18,7 @@ private slots:
     void shadowedVoxelsGetNoLight();
     void directionalLightUsesIrradiance();
     void emissionIsAddedUnshadowed();
+    void mipLevelsAreBoxFilters_data();
     void mipLevelsAreBoxFilters();
     void directionalMipsKeepThinWallsOpaque();
     void droppedBackFacesLeaveTheChainsTravellingTheirWay();
@@ -37,6 +38,8 @@ private:
     const glm::vec3 m_lightPosition { 5.0f, 9.0f, 7.0f };
     const glm::vec3 m_intensity { 30.0f, 20.0f, 10.0f };
     bool m_dropBackFaces = false; ///< RenderSettings::dropBackFaces for the next render()
+    int m_bounces = 1; ///< RenderSettings::bounces for the next render()
+    render::VoxelMode m_voxelMode = render::VoxelMode::Dense; ///< for the next render()
 };
 
 void LightInjectionTest::initTestCase()
@@ -68,8 +71,10 @@ void LightInjectionTest::render(
     // Emitters are area lights while direct light is on, and their emission then stays out of the voxels:
     // the tests of emission in the voxels turn direct light off (they have no other light).
     settings.direct = !emissionInVoxels;
-    // One bounce: the first-bounce volume keeps its own levels (with more, the bounced volume has them).
-    settings.bounces = 1;
+    // One bounce unless a test asks for more: the first-bounce volume then keeps its own levels (with more,
+    // the bounced volume has them).
+    settings.bounces = m_bounces;
+    settings.voxelMode = m_voxelMode;
     settings.anisotropicMips = anisotropic;
     settings.dropBackFaces = m_dropBackFaces;
     settings.voxelResolution = resolution;
@@ -155,16 +160,29 @@ void LightInjectionTest::emissionIsAddedUnshadowed()
     QVERIFY(std::abs(v.r - 2.0f) < 2e-3f && std::abs(v.g - 1.0f) < 1e-3f && std::abs(v.b - 0.5f) < 1e-3f);
 }
 
+void LightInjectionTest::mipLevelsAreBoxFilters_data()
+{
+    QTest::addColumn<bool>("bounced");
+    QTest::newRow("first-bounce light") << false;
+    // The bounce solve's reinjection writes level 1 itself, from the voxels it has just lit
+    // (bounce/ReinjectBounce.comp); the mip filter the levels above.
+    QTest::newRow("bounced light") << true;
+}
+
 void LightInjectionTest::mipLevelsAreBoxFilters()
 {
+    QFETCH(bool, bounced);
     render::Scene scene = floorScene(true);
     scene.materials[0].emission = glm::vec3(0.3f, 0.2f, 0.1f); // mixes lit, shadowed and emissive voxels
+    m_bounces = bounced ? render::RenderSettings::kConvergedBounces : 1;
     render(scene, 16);
+    m_bounces = 1;
+    const std::string volume = bounced ? "bounced" : "radiance";
     int size0 = 0;
-    const std::vector<float> level0 = m_gl.renderer->readVoxels("radiance", 0, size0);
+    const std::vector<float> level0 = m_gl.renderer->readVoxels(volume, 0, size0);
     for (int level = 1; level <= 4; ++level) {
         int size = 0;
-        const std::vector<float> mip = m_gl.renderer->readVoxels("radiance", level, size);
+        const std::vector<float> mip = m_gl.renderer->readVoxels(volume, level, size);
         QCOMPARE(size, size0 >> level);
         const int block = 1 << level;
         double worst = 0.0;
@@ -241,26 +259,57 @@ void LightInjectionTest::droppedBackFacesLeaveTheChainsTravellingTheirWay()
 void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel_data()
 {
     QTest::addColumn<bool>("dropBackFaces");
-    QTest::newRow("every voxel") << false;
-    QTest::newRow("back faces dropped") << true;
+    QTest::addColumn<bool>("bounced");
+    QTest::addColumn<bool>("sparse");
+    QTest::newRow("every voxel") << false << false << false;
+    QTest::newRow("back faces dropped") << true << false << false;
+    // The bounce solve's reinjection writes the chains' first level itself, from the voxels it has just lit
+    // (bounce/ReinjectBounce.comp); the mip filter the levels above.
+    QTest::newRow("bounced, every voxel") << false << true << false;
+    QTest::newRow("bounced, back faces dropped") << true << true << false;
+    QTest::newRow("bounced, sparse grid") << true << true << true;
 }
 
 void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
 {
     QFETCH(bool, dropBackFaces);
+    QFETCH(bool, bounced);
+    QFETCH(bool, sparse);
+    // A wall beside the floor gives the bounces light to carry and the cells two orientations.
     render::Scene scene = floorScene(true);
     scene.materials[0].emission = glm::vec3(0.3f, 0.2f, 0.1f);
+    scene.meshes.push_back(test::makeTriangles(
+        test::quad({ 12.5f, 0, 1 }, { 12.5f, 0, 15 }, { 12.5f, 9, 15 }, { 12.5f, 9, 1 })));
     m_dropBackFaces = dropBackFaces;
+    m_bounces = bounced ? render::RenderSettings::kConvergedBounces : 1;
+    m_voxelMode = sparse ? render::VoxelMode::Sparse : render::VoxelMode::Dense;
     render(scene, 16, true);
     m_dropBackFaces = false;
+    m_bounces = 1;
+    m_voxelMode = render::VoxelMode::Dense;
+    const std::string volume = bounced ? "bounced" : "radiance";
     int size0 = 0;
-    const std::vector<float> level0 = m_gl.renderer->readVoxels("radiance", 0, size0);
+    const std::vector<float> level0 = m_gl.renderer->readVoxels(volume, 0, size0);
     QCOMPARE(size0, 16);
+    if (bounced) {
+        // The bounces brightened the lit voxels: the chains below were filtered from the solve's light.
+        int directSize = 0;
+        const std::vector<float> direct = m_gl.renderer->readVoxels("radiance", 0, directSize);
+        double bouncedSum = 0.0, directSum = 0.0;
+        for (std::size_t k = 0; k < level0.size(); k += 4) {
+            bouncedSum += level0[k];
+            directSum += direct[k];
+        }
+        QVERIFY2(bouncedSum > 1.05 * directSum,
+            qPrintable(QString("%1 against %2").arg(bouncedSum).arg(directSum)));
+    }
     int normalSize = 0;
     const std::vector<float> normals = m_gl.renderer->readVoxels("normal", 0, normalSize);
     QCOMPARE(normalSize, size0);
-    const char* const channels[6]
-        = { "radiance+x", "radiance-x", "radiance+y", "radiance-y", "radiance+z", "radiance-z" };
+    std::string channels[6];
+    const char* const directions[6] = { "+x", "-x", "+y", "-y", "+z", "-z" };
+    for (int tile = 0; tile < 6; ++tile)
+        channels[tile] = volume + directions[tile];
     for (int tile = 0; tile < 6; ++tile) {
         const int axis = tile / 2;
         const bool positive = tile % 2 == 0; // travelling towards +axis: the lower child is in front
@@ -311,7 +360,8 @@ void LightInjectionTest::directionalChainsMatchCompositingAtEveryLevel()
                 worst = std::max(
                     worst, std::abs(double(gpu[k]) - expected[k]) - 2e-3 * level * std::abs(expected[k]));
             QVERIFY2(worst <= 1e-5,
-                qPrintable(QString("%1 level %2 off by %3").arg(channels[tile]).arg(level).arg(worst)));
+                qPrintable(
+                    QString("%1 level %2 off by %3").arg(channels[tile].c_str()).arg(level).arg(worst)));
             previous = expected;
             previousSize = size;
         }
