@@ -237,12 +237,15 @@ void main()
             vec4 value = held;
             // The voxels the voxelizer reached, and only those, have opacity.
             if (albedo.a > 0.0) {
+#ifdef INCREMENT
+                // Added to the previous iterate, which holds the first-bounce light's opacity (every reinjection
+                // stores it): the first-bounce light itself is not needed.
+                vec3 previous = held.rgb;
+                vec4 result = held;
+#else
                 vec4 direct = texelFetch(uDirect, texel, 0);
                 // A cold start's previous iterate is the first-bounce light.
                 vec3 previous = uCompare ? held.rgb : direct.rgb;
-#ifdef INCREMENT
-                vec4 result = vec4(previous, direct.a);
-#else
                 vec4 result = direct;
 #endif
                 if (max(albedo.r, max(albedo.g, albedo.b)) > 0.0) {
