@@ -705,19 +705,29 @@ std::vector<float> Renderer::readVoxels(const std::string& channel, int level, i
         size = std::max(1, v.frame.resolution >> level);
         return std::vector<float>(std::size_t(size) * std::size_t(size) * std::size_t(size) * 4, 0.0f);
     }
-    // The channels are the voxel textures of those names in the resource table.
+    // The channels are the voxel textures of those names in the resource table: the voxels' own, which a
+    // sparse grid keeps in its brick pool, and the bounce solve's cells, a dense grid of texels either way.
     const gl::Texture* texture = nullptr;
+    bool pooled = false;
     for (const char* name : { resource::kAlbedo, resource::kNormal, resource::kEmission, resource::kRadiance,
              resource::kBounced })
+        if (channel == name) {
+            texture = m_state->resourcesOf(grid).find(name);
+            pooled = true;
+        }
+    for (const char* name :
+        { resource::kBounceCells, resource::kBounceCellsBack, resource::kBounceCellNormals })
         if (channel == name)
             texture = m_state->resourcesOf(grid).find(name);
     if (!texture || !*texture)
-        throw std::invalid_argument(
-            "no voxel channel '" + channel + "' (albedo, normal, emission, radiance, bounced)");
+        throw std::invalid_argument("no voxel channel '" + channel
+            + "' (albedo, normal, emission, radiance, bounced; with bounces in the voxels bounce cells, "
+              "bounce "
+              "cells, back faces, bounce cell normals)");
     // The cone volume's box levels, where it keeps none of its own.
     if (level > 0 && texture == &v.coneRadiance() && v.inspectionMips)
         texture = &v.inspectionMips;
-    if (level == 0 && v.sparse)
+    if (level == 0 && v.sparse && pooled)
         return readSparseLevel0(v, *texture, size);
     return readTextureLevel(*texture, level, size);
 }

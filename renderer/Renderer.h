@@ -124,7 +124,8 @@ public:
      * Reads one level of a voxel channel for tests and the inspector: "albedo", "normal", "emission",
      * "radiance", "bounced", or with anisotropic mips "radiance+x", "radiance-x", ... "radiance-z" (levels
      * 1..N), and "bounced+x" ... "bounced-z" (the bounced volume's chains, which cones trace when the voxels
-     * carry bounces); of grid @p grid (gridCount()).
+     * carry bounces); the bounce solve's cells ("bounce cells", "bounce cells, back faces", "bounce cell
+     * normals", a texel per cell); of grid @p grid (gridCount()).
      */
     std::vector<float> readVoxels(const std::string& channel, int level, int& size, int grid = 0) const;
 

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace vct::render {
@@ -393,6 +394,15 @@ void VoxelBouncePass::reinject(FrameContext& frame, Reinjection how, int iterati
         defines.emplace_back("HIGHER_BOUNCES");
         name += ", higher bounces";
     }
+    // A block of 2^3 voxels shares the eight cells its voxels interpolate between only where cells are 4^3
+    // voxels or more (bounce/ReinjectBounce.comp); cells of 2^3 are looked up voxel by voxel. The higher
+    // bounces' cells, coarser than the bounce cells, always are.
+    if (m_cells.cellSize >= 4) {
+        defines.emplace_back("BLOCK_CELLS");
+        name += ", cells by blocks";
+    }
+    if (split && m_higherCells.cellSize < 4)
+        throw std::logic_error("the higher bounces' cells are coarser than the bounce cells");
     // The reinjection writes the first mip level above the voxels it lights (bounce/ReinjectBounce.comp).
     const bool anisotropic = frame.settings.anisotropicMips;
     const bool filterDirectional = anisotropic && bool(VoxelMipBuilder::directionalDesc(res));

@@ -11,9 +11,11 @@
 // One invocation per listed cell of 2^3 voxels (VoxelMipBuilder's first level), not per voxel: a lookup
 // interpolates between the eight cells around a voxel, and the eight voxels of an aligned 2^3 block have the same
 // eight around them for any cells of 4^3 voxels or more, so the block fetches those cells once for all of its
-// voxels. Having its voxels' new light at hand, it also writes the cell's texels of the first mip level above
-// them (FILTER_DIRECTIONAL: the six chains, mipmap/DirectionalComposite.glsl; FILTER_BOX: the box level), which
-// the filter would otherwise fetch again (docs/DESIGN.md, "The reinjection by blocks").
+// voxels (the bounce cells with BLOCK_CELLS: cells of 2^3 voxels, `bounce_cell=2`, are looked up voxel by voxel;
+// the higher bounces' cells, coarser than the bounce cells, are 4^3 voxels at least). Having its voxels' new light at hand, it also writes the cell's
+// texels of the first mip level above them (FILTER_DIRECTIONAL: the six chains, mipmap/DirectionalComposite.glsl;
+// FILTER_BOX: the box level), which the filter would otherwise fetch again (docs/DESIGN.md, "The reinjection by
+// blocks").
 #extension GL_NV_shader_atomic_float : require
 #include "bounce/BounceSums.glsl"
 #include "common/OccupiedCells.glsl"
@@ -182,6 +184,14 @@ vec3 ownCellLight(OwnCell own, vec3 n, bool faced, bool change)
     return max(dot(n, own.normal.xyz) >= 0.0 ? own.front : own.back, lowest);
 }
 
+// A voxel's own cell read directly, for cells too small to be shared by a block.
+OwnCell ownCellAt(ivec3 cell)
+{
+    vec4 cellNormal = texelFetch(uCellNormal, cell, 0);
+    vec3 backLight = cellNormal.w > 0.75 ? texelFetch(uIrradianceBack, cell, 0).rgb : vec3(0.0);
+    return OwnCell(cellNormal, texelFetch(uIrradiance, cell, 0).rgb, backLight);
+}
+
 // The corner of a block's cells (base, cellVoxels voxels a side) that holds voxel `first`.
 int ownCorner(ivec3 first, ivec3 base, int cellVoxels)
 {
@@ -206,18 +216,19 @@ void main()
         BlockCells higher
             = fetchBlockCells(uHigher, uHigherBack, uHigherNormal, uHigher, uHigherBack, false, uHigherCells, base);
         OwnCell higherOwn = ownCellOf(higher, ownCorner(firstVoxel, base, uHigherCellVoxels));
-#else
+#endif
+#if !defined(INCREMENT) && defined(BLOCK_CELLS)
         irradianceCellBlock(firstCentre, uGridOrigin, uCellSize, base, unused);
         BlockCells cells = fetchBlockCells(
             uIrradiance, uIrradianceBack, uCellNormal, uIrradiance, uIrradianceBack, false, uCells, base);
         OwnCell own = ownCellOf(cells, ownCorner(firstVoxel, base, uCellVoxels));
+#endif
 #ifdef HIGHER_BOUNCES
         ivec3 higherBase;
         irradianceCellBlock(firstCentre, uGridOrigin, uHigherCellSize, higherBase, unused);
         BlockCells higher = fetchBlockCells(
             uHigher, uHigherBack, uHigherNormal, uHigherBase, uHigherBaseBack, true, uHigherCells, higherBase);
         OwnCell higherOwn = ownCellOf(higher, ownCorner(firstVoxel, higherBase, uHigherCellVoxels));
-#endif
 #endif
         // Where bounce/DecideTail.comp found the tail q / (1 - q) trustworthy, each voxel stores L + tail * change:
         // the limit of the iteration when its change shrinks by q per step. The sums still measure the plain change.
@@ -262,8 +273,15 @@ void main()
                     gathered = faced && lookUpBlock(higher, f, n, looked) ? looked
                                                                           : ownCellLight(higherOwn, n, faced, true);
 #else
+#ifdef BLOCK_CELLS
                     irradianceCellBlock(p, uGridOrigin, uCellSize, sameBase, f);
                     gathered = faced && lookUpBlock(cells, f, n, looked) ? looked : ownCellLight(own, n, faced, false);
+#else
+                    vec4 lookedHere;
+                    gathered = faced && lookUpIrradiance(p, n, lookedHere)
+                        ? lookedHere.rgb
+                        : ownCellLight(ownCellAt(voxel / uCellVoxels), n, faced, false);
+#endif
 #ifdef HIGHER_BOUNCES
                     // Rounding can take a difference of two gathers of nearly the same light below zero.
                     irradianceCellBlock(p, uGridOrigin, uHigherCellSize, sameBase, f);
