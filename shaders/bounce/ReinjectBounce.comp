@@ -12,10 +12,10 @@
 // interpolates between the eight cells around a voxel, and the eight voxels of an aligned 2^3 block have the same
 // eight around them for any cells of 4^3 voxels or more, so the block fetches those cells once for all of its
 // voxels (the bounce cells with BLOCK_CELLS: cells of 2^3 voxels, `bounce_cell=2`, are looked up voxel by voxel;
-// the higher bounces' cells, coarser than the bounce cells, are 4^3 voxels at least). Having its voxels' new light at hand, it also writes the cell's
-// texels of the first mip level above them (FILTER_DIRECTIONAL: the six chains, mipmap/DirectionalComposite.glsl;
-// FILTER_BOX: the box level), which the filter would otherwise fetch again (docs/DESIGN.md, "The reinjection by
-// blocks").
+// the higher bounces' cells, coarser than the bounce cells, are 4^3 voxels at least). Having its voxels' new light
+// at hand, it also writes the cell's texels of the first mip level above them (FILTER_DIRECTIONAL: the six chains,
+// common/DirectionalComposite.glsl; FILTER_BOX: the box level), which the filter would otherwise fetch again
+// (docs/DESIGN.md, "The reinjection by blocks").
 #extension GL_NV_shader_atomic_float : require
 #include "bounce/BounceSums.glsl"
 #include "common/OccupiedCells.glsl"
@@ -32,7 +32,7 @@ layout(rgba16f, binding = 0) uniform image3D uBounced; // the previous iterate i
 uniform int uIteration; // this iteration's index in the solve (bounce/BounceSums.glsl)
 #ifdef FILTER_DIRECTIONAL
 layout(rgba16f, binding = 2) writeonly uniform image3D uTowards;
-#include "mipmap/DirectionalComposite.glsl"
+#include "common/DirectionalComposite.glsl"
 #else
 vec4 children[8];
 #endif

@@ -12,7 +12,7 @@ layout(rgba16f, binding = 0) writeonly uniform image3D uTowards;
 #ifdef DROP_BACK_FACES
 layout(binding = 1) uniform sampler3D uNormal; // the voxels' averaged normals (shorter where they cancel)
 #endif
-#include "mipmap/DirectionalComposite.glsl"
+#include "common/DirectionalComposite.glsl"
 
 void main()
 {
